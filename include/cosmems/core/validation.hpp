@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace cosmems {
+
+/// Formats a value the way error messages quote it: shortest round-trip form.
+inline std::string FormatValue(double value) {
+  std::ostringstream out;
+  out.precision(17);
+  out << value;
+  double back = 0.0;
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::ostringstream trial;
+    trial.precision(digits);
+    trial << value;
+    std::istringstream(trial.str()) >> back;
+    if (back == value) return trial.str();
+  }
+  return out.str();
+}
+
+/// Throws std::invalid_argument("FIELD = VALUE: must be positive") unless 0 < value < inf.
+inline void RequirePositive(const std::string& field, double value) {
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    throw std::invalid_argument(field + " = " + FormatValue(value) + ": must be positive and finite");
+  }
+}
+
+/// Throws std::invalid_argument unless lower < value < upper.
+inline void RequireInRange(const std::string& field, double value, double lower, double upper) {
+  if (!(value > lower && value < upper)) {
+    throw std::invalid_argument(field + " = " + FormatValue(value) + ": must lie in (" +
+                                FormatValue(lower) + ", " + FormatValue(upper) + ")");
+  }
+}
+
+/// Throws std::invalid_argument unless value is finite.
+inline void RequireFinite(const std::string& field, double value) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument(field + " = " + FormatValue(value) + ": must be finite");
+  }
+}
+
+}  // namespace cosmems

@@ -1,0 +1,28 @@
+#pragma once
+
+/// The umbrella header: everything cosmems::core offers.
+
+#include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/analysis/mode_kind.hpp"
+#include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/beam/beam_description.hpp"
+#include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/dof_map.hpp"
+#include "cosmems/beam/element_interpolation.hpp"
+#include "cosmems/beam/element_spec.hpp"
+#include "cosmems/beam/frame_element.hpp"
+#include "cosmems/beam/frame_layout.hpp"
+#include "cosmems/beam/load_case.hpp"
+#include "cosmems/beam/load_vector.hpp"
+#include "cosmems/beam/power_series_basis.hpp"
+#include "cosmems/beam/support.hpp"
+#include "cosmems/core/constants.hpp"
+#include "cosmems/core/material.hpp"
+#include "cosmems/core/rectangular_section.hpp"
+#include "cosmems/core/status.hpp"
+#include "cosmems/core/units.hpp"
+#include "cosmems/core/validation.hpp"
+#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/cholmod_solver.hpp"
+#include "cosmems/linalg/symmetric_band_matrix.hpp"

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <memory>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "cosmems/core/status.hpp"
+
+namespace cosmems {
+
+/// Sparse Cholesky by SuiteSparse CHOLMOD (supernodal, AMD ordering) for large or multi-beam
+/// systems. CHOLMOD stays private to the compiled library: this interface speaks Eigen only.
+///
+/// Eigen's idiom: AnalyzePattern() once per sparsity pattern, Factorize() per matrix with that
+/// pattern, Solve(), info().
+class CholmodSolver {
+ public:
+  CholmodSolver();
+  ~CholmodSolver();
+  CholmodSolver(CholmodSolver&&) noexcept;
+  CholmodSolver& operator=(CholmodSolver&&) noexcept;
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
+
+  /// `a` holds both triangles of a symmetric matrix.
+  CholmodSolver& AnalyzePattern(const Eigen::SparseMatrix<double>& a);
+  CholmodSolver& Factorize(const Eigen::SparseMatrix<double>& a);
+  CholmodSolver& Compute(const Eigen::SparseMatrix<double>& a) {
+    return AnalyzePattern(a).Factorize(a);
+  }
+
+  Status info() const;
+  Eigen::VectorXd Solve(const Eigen::VectorXd& b) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosmems

@@ -1,0 +1,90 @@
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace cosmems {
+
+/// A symmetric matrix held by its lower band, LAPACK style: entry (i, j) with
+/// 0 <= i - j <= bandwidth sits at data(i - j, j). A beam numbered node by node has a band of
+/// 2 x (dofs per node) - 1, so storage and work grow linearly with the element count.
+class SymmetricBandMatrix {
+ public:
+  SymmetricBandMatrix() = default;
+  SymmetricBandMatrix(int size, int bandwidth)
+      : size_(size), bandwidth_(bandwidth), data_(Eigen::MatrixXd::Zero(bandwidth + 1, size)) {}
+
+  int size() const { return size_; }
+  int bandwidth() const { return bandwidth_; }
+  const Eigen::MatrixXd& data() const { return data_; }
+
+  /// Entry (i, j) for any order of i and j; zero outside the band.
+  double operator()(int i, int j) const {
+    if (i < j) std::swap(i, j);
+    return i - j <= bandwidth_ ? data_(i - j, j) : 0.0;
+  }
+
+  /// Adds v to entries (i, j) and (j, i); |i - j| must lie within the band.
+  void Add(int i, int j, double v) {
+    if (i < j) std::swap(i, j);
+    data_(i - j, j) += v;
+  }
+
+  /// y = A x. Allocates nothing.
+  template <typename In, typename Out>
+  void Multiply(const Eigen::MatrixBase<In>& x, Eigen::MatrixBase<Out>& y) const {
+    y.setZero();
+    for (int j = 0; j < size_; ++j) {
+      y(j) += data_(0, j) * x(j);
+      const int last = std::min(size_ - 1, j + bandwidth_);
+      for (int i = j + 1; i <= last; ++i) {
+        const double a = data_(i - j, j);
+        y(i) += a * x(j);
+        y(j) += a * x(i);
+      }
+    }
+  }
+
+  Eigen::VectorXd operator*(const Eigen::VectorXd& x) const {
+    Eigen::VectorXd y(size_);
+    Multiply(x, y);
+    return y;
+  }
+
+  Eigen::MatrixXd ToDense() const {
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(size_, size_);
+    for (int j = 0; j < size_; ++j) {
+      for (int i = j; i <= std::min(size_ - 1, j + bandwidth_); ++i) {
+        dense(i, j) = dense(j, i) = data_(i - j, j);
+      }
+    }
+    return dense;
+  }
+
+  /// Both triangles, as the general sparse solvers expect.
+  Eigen::SparseMatrix<double> ToSparse() const {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(size_) * (2 * bandwidth_ + 1));
+    for (int j = 0; j < size_; ++j) {
+      for (int i = j; i <= std::min(size_ - 1, j + bandwidth_); ++i) {
+        const double a = data_(i - j, j);
+        if (a == 0.0) continue;
+        entries.emplace_back(i, j, a);
+        if (i != j) entries.emplace_back(j, i, a);
+      }
+    }
+    Eigen::SparseMatrix<double> sparse(size_, size_);
+    sparse.setFromTriplets(entries.begin(), entries.end());
+    return sparse;
+  }
+
+ private:
+  int size_ = 0;
+  int bandwidth_ = 0;
+  Eigen::MatrixXd data_;
+};
+
+}  // namespace cosmems
