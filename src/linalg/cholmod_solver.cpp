@@ -10,7 +10,10 @@ struct CholmodSolver::Impl {
   bool factorised = false;
 };
 
-CholmodSolver::CholmodSolver() : impl_(std::make_unique<Impl>()) {}
+CholmodSolver::CholmodSolver() : impl_(std::make_unique<Impl>()) {
+  // A failed factorisation is reported through info(); a library must not print to stderr.
+  impl_->llt.cholmod().print = 0;
+}
 CholmodSolver::~CholmodSolver() = default;
 CholmodSolver::CholmodSolver(CholmodSolver&&) noexcept = default;
 CholmodSolver& CholmodSolver::operator=(CholmodSolver&&) noexcept = default;

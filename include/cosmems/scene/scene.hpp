@@ -1,0 +1,145 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "cosmems/beam/beam_description.hpp"
+#include "cosmems/scene/scene_effects.hpp"
+
+namespace cosmems {
+
+/// The beam theory a scene asks for (model.theory).
+enum class Theory {
+  kLinear,      ///< "linear": small deflections
+  kStretching,  ///< "stretching": mid-plane stretching (K_NL)
+  kCosserat,    ///< "cosserat": large deflections
+};
+
+/// The analysis a scene runs (analysis.type).
+enum class AnalysisType { kStatic, kModal, kBuckling, kPullin, kTransient, kRelease, kHaptic };
+
+/// The haptic device driver of a haptic analysis (device.backend).
+enum class DeviceBackend { kScripted, kOpenHaptics };
+
+/// The scene-file spelling: "cantilever" | "bridge".
+constexpr const char* ToString(StructureKind kind) {
+  switch (kind) {
+    case StructureKind::kCantilever:
+      return "cantilever";
+    case StructureKind::kBridge:
+      return "bridge";
+  }
+  return "unknown";
+}
+
+/// The scene-file spelling: "linear" | "stretching" | "cosserat".
+constexpr const char* ToString(Theory theory) {
+  switch (theory) {
+    case Theory::kLinear:
+      return "linear";
+    case Theory::kStretching:
+      return "stretching";
+    case Theory::kCosserat:
+      return "cosserat";
+  }
+  return "unknown";
+}
+
+/// The scene-file and JSON spelling: "static" | "modal" | "buckling" | "pullin" | "transient" |
+/// "release" | "haptic".
+constexpr const char* ToString(AnalysisType type) {
+  switch (type) {
+    case AnalysisType::kStatic:
+      return "static";
+    case AnalysisType::kModal:
+      return "modal";
+    case AnalysisType::kBuckling:
+      return "buckling";
+    case AnalysisType::kPullin:
+      return "pullin";
+    case AnalysisType::kTransient:
+      return "transient";
+    case AnalysisType::kRelease:
+      return "release";
+    case AnalysisType::kHaptic:
+      return "haptic";
+  }
+  return "unknown";
+}
+
+/// The scene-file spelling: "scripted" | "openhaptics".
+constexpr const char* ToString(DeviceBackend backend) {
+  switch (backend) {
+    case DeviceBackend::kScripted:
+      return "scripted";
+    case DeviceBackend::kOpenHaptics:
+      return "openhaptics";
+  }
+  return "unknown";
+}
+
+/// [structure]: the beam's shape and supports, in metres. x runs along the beam from the first
+/// support, y away from the substrate, z across the width.
+struct SceneStructure {
+  StructureKind kind = StructureKind::kCantilever;
+  double length = 0.0;        ///< m
+  double width = 0.0;         ///< m, along z
+  double thickness = 0.0;     ///< m, along y
+  std::optional<double> gap;  ///< m between the lower face and the substrate; empty: no substrate
+  double axial_load = 0.0;    ///< N, residual axial force, tension > 0
+};
+
+/// [material]: an isotropic linear-elastic material.
+struct SceneMaterial {
+  double young_modulus = 0.0;  ///< E [Pa]
+  double density = 0.0;        ///< rho [kg/m^3]
+  double poisson_ratio = 0.22; ///< nu [-], in (-1, 0.5)
+  bool plate_modulus = false;  ///< true: the beam bends with E / (1 - nu^2) (wide beams)
+};
+
+/// [model]: how the beam is discretised.
+struct SceneModel {
+  Theory theory = Theory::kLinear;
+  int dimension = 3;     ///< 2: planar (ux, uy, rz); 3: full 3-D frame
+  int elements = 20;     ///< equal elements along the beam
+  int series_order = 1;  ///< power-series terms: 0 = Hermite + consistent mass, 1 adds M2, ...
+  int modes = 0;         ///< 0: the full model; k > 0: modal reduction to k modes
+};
+
+/// [loads]: static loads in SI, components along x, y, z.
+struct SceneLoads {
+  Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();      ///< N at the free end (cantilever)
+  Eigen::Vector3d midspan_force = Eigen::Vector3d::Zero();  ///< N at x = length / 2
+  Eigen::Vector3d distributed = Eigen::Vector3d::Zero();    ///< N/m over the whole length
+  Eigen::Vector3d tip_moment = Eigen::Vector3d::Zero();     ///< N m at the free end (cantilever)
+};
+
+/// [analysis]: what to compute, and the parameters of that analysis.
+struct SceneAnalysis {
+  AnalysisType type = AnalysisType::kStatic;
+  int count = 4;  ///< modal: the number of modes, lowest first
+};
+
+/// [device]: the haptic device of a haptic analysis.
+struct SceneDevice {
+  DeviceBackend backend = DeviceBackend::kScripted;
+  std::string trajectory = "press";  ///< a built-in motion or a CSV file (time_s, x_m, y_m, z_m)
+  bool realtime = false;             ///< true: paced at the rate on the wall clock
+};
+
+/// A scene file in typed form: SI units, the documented defaults for every optional key
+/// (see SCENES.md). LoadScene and its siblings produce only validated scenes.
+struct Scene {
+  std::string source;  ///< the file path as given, or the embedded scene's name
+  SceneStructure structure;
+  SceneMaterial material;
+  SceneModel model;
+  SceneLoads loads;
+  SceneEffects effects;
+  SceneAnalysis analysis;
+  std::optional<SceneDevice> device;
+};
+
+}  // namespace cosmems

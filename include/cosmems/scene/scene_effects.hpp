@@ -1,0 +1,61 @@
+#pragma once
+
+#include <array>
+#include <optional>
+
+namespace cosmems {
+
+// The [effects] tables of a scene. A table that is present is an effect the scene asks for
+// unless it says enabled = false. Parameters the schema gives no default for stay empty when
+// absent, so a later solver can tell "not given" from any value.
+
+/// [effects.contact]: unilateral contact with the substrate.
+struct ContactEffect {
+  bool enabled = true;
+};
+
+/// [effects.stiction]: adhesion to the substrate; implies contact.
+struct StictionEffect {
+  bool enabled = true;
+  std::optional<double> adhesion_energy;  ///< work of adhesion [J/m^2], >= 0
+};
+
+/// [effects.electrostatic]: a parallel-plate electrode on the substrate, under the whole beam
+/// unless electrode_start / electrode_end are given.
+struct ElectrostaticEffect {
+  bool enabled = true;
+  std::optional<double> voltage;          ///< V
+  bool fringing = false;                  ///< add the fringing-field correction
+  std::optional<double> electrode_start;  ///< m from the first support, in [0, length]
+  std::optional<double> electrode_end;    ///< m from the first support, in [0, length]
+};
+
+/// [effects.casimir]: the ideal parallel-plate Casimir pressure.
+struct CasimirEffect {
+  bool enabled = true;
+};
+
+/// [effects.van_der_waals]: the van der Waals pressure between beam and substrate.
+struct VanDerWaalsEffect {
+  bool enabled = true;
+  std::optional<double> hamaker;  ///< Hamaker constant [J], > 0
+};
+
+/// [effects.damping]: either a quality factor or Rayleigh damping C = alpha M + beta K.
+struct DampingEffect {
+  bool enabled = true;
+  std::optional<double> quality_factor;          ///< Q [-], > 0
+  std::optional<std::array<double, 2>> rayleigh;  ///< [alpha 1/s, beta s], each >= 0
+};
+
+/// Every effect a scene declares; an absent table is an effect not simulated.
+struct SceneEffects {
+  std::optional<ContactEffect> contact;
+  std::optional<StictionEffect> stiction;
+  std::optional<ElectrostaticEffect> electrostatic;
+  std::optional<CasimirEffect> casimir;
+  std::optional<VanDerWaalsEffect> van_der_waals;
+  std::optional<DampingEffect> damping;
+};
+
+}  // namespace cosmems

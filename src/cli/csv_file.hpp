@@ -1,0 +1,31 @@
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace cosmems::internal {
+
+/// A CSV file with a header row, written row by row. Throws CliInputError naming the file when
+/// it cannot be opened or written.
+class CsvFile {
+ public:
+  CsvFile(const std::filesystem::path& path, const std::string& header);
+
+  /// One row; cells are written as given, joined by commas.
+  void Row(const std::vector<std::string>& cells);
+  /// Flushes and checks that everything reached the file.
+  void Close();
+
+  /// A number in the shortest form that reads back exactly.
+  static std::string Number(double value);
+
+ private:
+  void Check();
+
+  std::filesystem::path path_;
+  std::ofstream file_;
+};
+
+}  // namespace cosmems::internal

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cosmems/core/status.hpp"
+#include "cosmems/scene/scene.hpp"
+
+namespace cosmems::internal {
+
+/// What every result reports whatever the analysis (SCENES.md, "JSON results"), plus the
+/// warnings the run raised.
+struct RunHeader {
+  std::string scene;  ///< the scene name or path as given
+  AnalysisType analysis = AnalysisType::kStatic;
+  Status status = Status::kOk;
+  SceneModel model;
+  int dofs = 0;              ///< free degrees of freedom of the model
+  double wall_time_s = 0.0;  ///< model build and solve
+  std::vector<std::string> warnings;
+
+  /// scene, analysis, status, model {theory, dimension, elements, series_order, modes, dofs},
+  /// wall_time_s.
+  void AddJson(nlohmann::ordered_json& json) const;
+  /// The opening lines of the readable summary.
+  void Print(std::ostream& out) const;
+};
+
+}  // namespace cosmems::internal

@@ -1,0 +1,101 @@
+#include "static_report.hpp"
+
+#include <chrono>
+
+#include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/scene/scene_conversion.hpp"
+#include "csv_file.hpp"
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+std::vector<double> ToVector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+template <int Dim>
+std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
+  RunHeader header{scene.source, AnalysisType::kStatic, Status::kOk, scene.model, 0, 0.0, {}};
+  const LoadCase loads = MakeLoadCase(scene);
+  const auto start = std::chrono::steady_clock::now();
+  const BeamModel<Dim> model(MakeBeamDescription(scene));
+  const StaticSolution solution = SolveStatic(model, loads);
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.status = solution.status;
+  header.dofs = model.FreeDofCount();
+
+  StaticResults results;
+  results.gap = scene.structure.gap;
+  if (solution.status != Status::kOk) {
+    return std::make_unique<StaticReport>(std::move(header), std::move(results));
+  }
+  const BeamField<Dim> field(model, solution.displacement);
+  const double length = scene.structure.length;
+  if (scene.structure.kind == StructureKind::kCantilever) {
+    const typename BeamField<Dim>::Vector6 tip = field.At(length);
+    results.tip_displacement = tip.template head<3>();
+    results.tip_rotation = tip.template tail<3>();
+  }
+  results.midspan_displacement = field.At(0.5 * length).template head<3>();
+  results.max_deflection = field.MaxDeflectionTowardSubstrate();
+  results.max_stress_pa = field.MaxStress();
+  results.axial_force_n = field.AxialForce(0);
+  const Eigen::MatrixXd values = field.AtNodes();
+  results.nodes.resize(values.rows(), 7);
+  for (Eigen::Index n = 0; n < values.rows(); ++n) {
+    results.nodes(n, 0) = model.NodeX()[n] * model.units().length;
+    results.nodes.row(n).tail<6>() = values.row(n);
+  }
+  if (results.gap && results.max_deflection >= *results.gap) {
+    header.warnings.push_back(
+        "the linear solution deflects " + Scientific(results.max_deflection) +
+        " m toward the substrate, at least the gap of " + Scientific(*results.gap) +
+        " m: it passes through the substrate (contact is not modelled in this version)");
+  }
+  return std::make_unique<StaticReport>(std::move(header), std::move(results));
+}
+
+}  // namespace
+
+std::unique_ptr<StaticReport> StaticReport::Run(const Scene& scene) {
+  return scene.model.dimension == 2 ? RunStatic<2>(scene) : RunStatic<3>(scene);
+}
+
+void StaticReport::AddResults(nlohmann::ordered_json& json) const {
+  if (results_.tip_displacement) json["tip_displacement"] = ToVector(*results_.tip_displacement);
+  json["midspan_displacement"] = ToVector(results_.midspan_displacement);
+  if (results_.tip_rotation) json["tip_rotation"] = ToVector(*results_.tip_rotation);
+  json["max_deflection"] = results_.max_deflection;
+  json["max_stress_pa"] = results_.max_stress_pa;
+  json["axial_force_n"] = results_.axial_force_n;
+}
+
+void StaticReport::PrintResults(std::ostream& out) const {
+  if (results_.tip_displacement) {
+    out << "tip deflection        " << Scientific(results_.tip_displacement->y()) << " m\n";
+    out << "tip displacement      " << Vector(*results_.tip_displacement) << " m\n";
+    out << "tip rotation          " << Vector(*results_.tip_rotation) << " rad\n";
+  }
+  out << "midspan displacement  " << Vector(results_.midspan_displacement) << " m\n";
+  out << "max deflection        " << Scientific(results_.max_deflection)
+      << " m toward the substrate";
+  if (results_.gap) out << " (gap " << Scientific(*results_.gap) << " m)";
+  out << "\n";
+  out << "max stress            " << Scientific(results_.max_stress_pa) << " Pa\n";
+  out << "axial force           " << Scientific(results_.axial_force_n) << " N\n";
+}
+
+void StaticReport::WriteFiles(const std::filesystem::path& directory) const {
+  CsvFile csv(directory / "deflection.csv", "x_m,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
+  for (Eigen::Index n = 0; n < results_.nodes.rows(); ++n) {
+    std::vector<std::string> cells;
+    for (Eigen::Index c = 0; c < results_.nodes.cols(); ++c) {
+      cells.push_back(CsvFile::Number(results_.nodes(n, c)));
+    }
+    csv.Row(cells);
+  }
+  csv.Close();
+}
+
+}  // namespace cosmems::internal

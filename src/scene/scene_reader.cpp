@@ -1,0 +1,240 @@
+#include "scene_reader.hpp"
+
+#include <array>
+#include <string>
+
+#include "cosmems/core/validation.hpp"
+#include "toml_field_reader.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge};
+constexpr std::array kTheories = {Theory::kLinear, Theory::kStretching, Theory::kCosserat};
+constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::kModal,
+                                       AnalysisType::kBuckling,  AnalysisType::kPullin,
+                                       AnalysisType::kTransient, AnalysisType::kRelease,
+                                       AnalysisType::kHaptic};
+constexpr std::array kDeviceBackends = {DeviceBackend::kScripted, DeviceBackend::kOpenHaptics};
+
+// Guards against a typo such as 20000000 exhausting memory; far beyond any useful mesh of one
+// beam (the power-series elements converge with a handful).
+constexpr int kMaxElements = 100000;
+constexpr int kMaxSeriesOrder = 6;
+
+SceneStructure ReadStructure(const TomlFieldReader& r) {
+  r.RequireTable("structure");
+  r.RejectUnknownKeys("structure", {"kind", "length", "width", "thickness", "gap", "axial_load"});
+  SceneStructure s;
+  s.kind = r.RequiredChoice("structure.kind", kStructureKinds, "structure kind");
+  s.length = r.RequiredPositive("structure.length");
+  s.width = r.RequiredPositive("structure.width");
+  s.thickness = r.RequiredPositive("structure.thickness");
+  s.gap = r.OptionalPositive("structure.gap");
+  s.axial_load = r.Number("structure.axial_load", s.axial_load);
+  return s;
+}
+
+SceneMaterial ReadMaterial(const TomlFieldReader& r) {
+  r.RequireTable("material");
+  r.RejectUnknownKeys("material", {"young_modulus", "density", "poisson_ratio", "plate_modulus"});
+  SceneMaterial m;
+  m.young_modulus = r.RequiredPositive("material.young_modulus");
+  m.density = r.RequiredPositive("material.density");
+  m.poisson_ratio = r.Number("material.poisson_ratio", m.poisson_ratio);
+  r.Require(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "material.poisson_ratio",
+            "must lie in (-1, 0.5)");
+  m.plate_modulus = r.Boolean("material.plate_modulus", m.plate_modulus);
+  return m;
+}
+
+SceneModel ReadModel(const TomlFieldReader& r) {
+  SceneModel m;
+  if (!r.HasTable("model")) return m;
+  r.RejectUnknownKeys("model", {"theory", "dimension", "elements", "series_order", "modes"});
+  m.theory = r.OptionalChoice("model.theory", kTheories, "theory").value_or(m.theory);
+  m.dimension = r.Integer("model.dimension", m.dimension);
+  r.Require(m.dimension == 2 || m.dimension == 3, "model.dimension", "must be 2 or 3");
+  m.elements = r.Integer("model.elements", m.elements);
+  r.Require(m.elements >= 1, "model.elements", "must be at least 1");
+  r.Require(m.elements <= kMaxElements, "model.elements",
+            "must be at most " + std::to_string(kMaxElements));
+  m.series_order = r.Integer("model.series_order", m.series_order);
+  r.Require(m.series_order >= 0 && m.series_order <= kMaxSeriesOrder, "model.series_order",
+            "must lie in 0 ... " + std::to_string(kMaxSeriesOrder));
+  m.modes = r.Integer("model.modes", m.modes);
+  r.Require(m.modes >= 0, "model.modes", "must be non-negative");
+  return m;
+}
+
+Eigen::Vector3d ReadVector3(const TomlFieldReader& r, const std::string& key) {
+  const std::optional<std::vector<double>> values = r.OptionalNumbers(key, 3);
+  if (!values) return Eigen::Vector3d::Zero();
+  return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
+}
+
+SceneLoads ReadLoads(const TomlFieldReader& r) {
+  SceneLoads l;
+  if (!r.HasTable("loads")) return l;
+  r.RejectUnknownKeys("loads", {"tip_force", "midspan_force", "distributed", "tip_moment"});
+  l.tip_force = ReadVector3(r, "loads.tip_force");
+  l.midspan_force = ReadVector3(r, "loads.midspan_force");
+  l.distributed = ReadVector3(r, "loads.distributed");
+  l.tip_moment = ReadVector3(r, "loads.tip_moment");
+  return l;
+}
+
+// A point of the beam axis, x in [0, length].
+std::optional<double> ReadPositionOnBeam(const TomlFieldReader& r, const std::string& key,
+                                         const SceneStructure& structure) {
+  const std::optional<double> x = r.OptionalNumber(key);
+  r.Require(!x || (*x >= 0.0 && *x <= structure.length), key,
+            "must lie on the beam, in [0, " + FormatValue(structure.length) + "]");
+  return x;
+}
+
+// An effect table: present (as a table) or not, and enabled unless it says otherwise.
+bool HasEffect(const TomlFieldReader& r, const std::string& name,
+               std::initializer_list<std::string_view> parameters, bool& enabled) {
+  const std::string table = "effects." + name;
+  if (!r.HasTable(table)) return false;
+  r.RejectUnknownKeys(table, parameters);
+  enabled = r.Boolean(table + ".enabled", true);
+  return true;
+}
+
+SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structure) {
+  SceneEffects e;
+  if (!r.HasTable("effects")) return e;
+  r.RejectUnknownKeys(
+      "effects", {"contact", "stiction", "electrostatic", "casimir", "van_der_waals", "damping"},
+      "effect");
+  if (ContactEffect c; HasEffect(r, "contact", {"enabled"}, c.enabled)) e.contact = c;
+  if (CasimirEffect c; HasEffect(r, "casimir", {"enabled"}, c.enabled)) e.casimir = c;
+  if (StictionEffect s; HasEffect(r, "stiction", {"enabled", "adhesion_energy"}, s.enabled)) {
+    s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy");
+    e.stiction = s;
+  }
+  if (ElectrostaticEffect s;
+      HasEffect(r, "electrostatic",
+                {"enabled", "voltage", "fringing", "electrode_start", "electrode_end"}, s.enabled)) {
+    s.voltage = r.OptionalNumber("effects.electrostatic.voltage");
+    s.fringing = r.Boolean("effects.electrostatic.fringing", s.fringing);
+    s.electrode_start = ReadPositionOnBeam(r, "effects.electrostatic.electrode_start", structure);
+    s.electrode_end = ReadPositionOnBeam(r, "effects.electrostatic.electrode_end", structure);
+    r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
+              "effects.electrostatic.electrode_end", "must exceed electrode_start");
+    e.electrostatic = s;
+  }
+  if (VanDerWaalsEffect v; HasEffect(r, "van_der_waals", {"enabled", "hamaker"}, v.enabled)) {
+    v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker");
+    e.van_der_waals = v;
+  }
+  if (DampingEffect d; HasEffect(r, "damping", {"enabled", "quality_factor", "rayleigh"}, d.enabled)) {
+    d.quality_factor = r.OptionalPositive("effects.damping.quality_factor");
+    if (const auto rayleigh = r.OptionalNumbers("effects.damping.rayleigh", 2)) {
+      r.Require((*rayleigh)[0] >= 0.0 && (*rayleigh)[1] >= 0.0, "effects.damping.rayleigh",
+                "alpha and beta must be non-negative");
+      r.Require(!d.quality_factor, "effects.damping.rayleigh",
+                "give quality_factor or rayleigh, not both");
+      d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
+    }
+    e.damping = d;
+  }
+  return e;
+}
+
+SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
+  r.RequireTable("analysis");
+  // The parameters of every documented analysis are known keys, so that a scene can carry
+  // them while it runs another type (switching with --set analysis.type=...); only the chosen
+  // analysis reads its own.
+  r.RejectUnknownKeys("analysis", {"type", "count", "duration", "time_step", "integrator",
+                                   "initial", "beta", "gamma", "alpha", "rho_inf", "voltage_max",
+                                   "rate"});
+  SceneAnalysis a;
+  a.type = r.RequiredChoice("analysis.type", kAnalysisTypes, "analysis type");
+  if (a.type == AnalysisType::kModal) {
+    a.count = r.Integer("analysis.count", a.count);
+    r.Require(a.count >= 1, "analysis.count", "must be at least 1");
+  }
+  return a;
+}
+
+std::optional<SceneDevice> ReadDevice(const TomlFieldReader& r) {
+  if (!r.HasTable("device")) return std::nullopt;
+  r.RejectUnknownKeys("device", {"backend", "trajectory", "realtime"});
+  SceneDevice d;
+  d.backend = r.OptionalChoice("device.backend", kDeviceBackends, "device backend")
+                  .value_or(d.backend);
+  d.trajectory = r.OptionalString("device.trajectory").value_or(d.trajectory);
+  r.Require(!d.trajectory.empty(), "device.trajectory", "must not be empty");
+  d.realtime = r.Boolean("device.realtime", d.realtime);
+  return d;
+}
+
+// Loads the structure cannot carry or the model cannot represent.
+void CheckLoads(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.structure.kind == StructureKind::kBridge) {
+    const std::string reason = "a bridge has no free end (tip loads need a cantilever)";
+    r.Require(scene.loads.tip_force.isZero(0.0), "loads.tip_force", reason);
+    r.Require(scene.loads.tip_moment.isZero(0.0), "loads.tip_moment", reason);
+  }
+  if (scene.model.dimension == 2) {
+    const std::string reason = "out of plane for model.dimension = 2";
+    r.Require(scene.loads.tip_force.z() == 0.0, "loads.tip_force[2]", reason);
+    r.Require(scene.loads.midspan_force.z() == 0.0, "loads.midspan_force[2]", reason);
+    r.Require(scene.loads.distributed.z() == 0.0, "loads.distributed[2]", reason);
+    r.Require(scene.loads.tip_moment.x() == 0.0, "loads.tip_moment[0]", reason);
+    r.Require(scene.loads.tip_moment.y() == 0.0, "loads.tip_moment[1]", reason);
+  }
+}
+
+// What the schema describes but this version cannot simulate is refused, never ignored. Each
+// later feature removes its line here.
+void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
+  const std::string unavailable = "not available in this version";
+  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
+            unavailable + " (only \"linear\" is)");
+  r.Require(scene.model.modes == 0, "model.modes",
+            "modal reduction is " + unavailable + " (0: the full model)");
+  r.Require(scene.structure.axial_load == 0.0, "structure.axial_load", unavailable);
+  r.Require(scene.analysis.type == AnalysisType::kStatic ||
+                scene.analysis.type == AnalysisType::kModal,
+            "analysis.type", unavailable + " (available: \"static\", \"modal\")");
+  const SceneEffects& e = scene.effects;
+  const std::pair<const char*, bool> effects[] = {
+      {"contact", e.contact && e.contact->enabled},
+      {"stiction", e.stiction && e.stiction->enabled},
+      {"electrostatic", e.electrostatic && e.electrostatic->enabled},
+      {"casimir", e.casimir && e.casimir->enabled},
+      {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled},
+      {"damping", e.damping && e.damping->enabled}};
+  for (const auto& [name, enabled] : effects) {
+    r.Require(!enabled, std::string("effects.") + name,
+              "the effect is " + unavailable + " (remove the table or set enabled = false)");
+  }
+  r.Require(!scene.device, "device",
+            unavailable + " (it drives the haptic analysis, not built yet)");
+}
+
+}  // namespace
+
+Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
+  const TomlFieldReader r(root, origins);
+  r.RejectUnknownKeys(
+      "", {"structure", "material", "model", "loads", "effects", "analysis", "device"}, "table");
+  Scene scene;
+  scene.structure = ReadStructure(r);
+  scene.material = ReadMaterial(r);
+  scene.model = ReadModel(r);
+  scene.loads = ReadLoads(r);
+  scene.effects = ReadEffects(r, scene.structure);
+  scene.analysis = ReadAnalysis(r);
+  scene.device = ReadDevice(r);
+  CheckLoads(r, scene);
+  RefuseUnavailable(r, scene);
+  return scene;
+}
+
+}  // namespace cosmems::internal

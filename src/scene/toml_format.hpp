@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+namespace cosmems::internal {
+
+/// A TOML value spelled on one line the way a scene file would hold it, for error messages:
+/// strings quoted and escaped, floats always with a '.', an exponent or inf/nan (20.0, not 20),
+/// arrays as [a, b] and tables inline as { key = value }.
+std::string FormatToml(const toml::node& node);
+
+/// Whether `key` is a TOML bare key: [A-Za-z0-9_-]+.
+bool IsBareKey(std::string_view key);
+
+/// A key as TOML writes it: bare when it can be, quoted otherwise.
+std::string FormatKey(std::string_view key);
+
+}  // namespace cosmems::internal
