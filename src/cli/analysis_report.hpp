@@ -1,9 +1,8 @@
 #pragma once
 
 #include <filesystem>
-#include <ostream>
-
 #include <nlohmann/json.hpp>
+#include <ostream>
 
 #include "run_header.hpp"
 

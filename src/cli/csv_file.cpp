@@ -1,7 +1,9 @@
 #include "csv_file.hpp"
 
+#include <array>
+#include <charconv>
+
 #include "cli_input_error.hpp"
-#include "cosmems/core/validation.hpp"
 
 namespace cosmems::internal {
 
@@ -21,7 +23,13 @@ void CsvFile::Close() {
   Check();
 }
 
-std::string CsvFile::Number(double value) { return FormatValue(value); }
+std::string CsvFile::Number(double value) {
+  std::array<char, 32> buffer{};
+  // + 0.0 turns -0 (a supported rotation, say) into 0: a table of results has no use for it.
+  const std::to_chars_result end =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0);
+  return {buffer.data(), end.ptr};
+}
 
 void CsvFile::Check() {
   if (!file_) {

@@ -18,7 +18,7 @@ class CsvFile {
   /// Flushes and checks that everything reached the file.
   void Close();
 
-  /// A number in the shortest form that reads back exactly.
+  /// A number in the shortest form that reads back exactly (0.0002, 1.5e-07).
   static std::string Number(double value);
 
  private:

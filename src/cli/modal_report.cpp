@@ -17,9 +17,8 @@ namespace {
 template <int Dim>
 Eigen::MatrixXd ShapeAtNodes(const BeamModel<Dim>& model, const Mode& mode) {
   const Eigen::MatrixXd values = BeamField<Dim>(model, mode.shape).AtNodes();
-  const double scale = mode.kind == ModeKind::kTorsion
-                           ? values.rightCols<3>().cwiseAbs().maxCoeff()
-                           : values.leftCols<3>().cwiseAbs().maxCoeff();
+  const double scale = mode.kind == ModeKind::kTorsion ? values.rightCols<3>().cwiseAbs().maxCoeff()
+                                                       : values.leftCols<3>().cwiseAbs().maxCoeff();
   Eigen::MatrixXd shape(values.rows(), 7);
   for (Eigen::Index n = 0; n < values.rows(); ++n) {
     shape(n, 0) = model.NodeX()[n] * model.units().length;
@@ -30,7 +29,10 @@ Eigen::MatrixXd ShapeAtNodes(const BeamModel<Dim>& model, const Mode& mode) {
 
 template <int Dim>
 std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
-  RunHeader header{scene.source, AnalysisType::kModal, Status::kOk, scene.model, 0, 0.0, {}};
+  RunHeader header;
+  header.scene = scene.source;
+  header.analysis = AnalysisType::kModal;
+  header.model = scene.model;
   ModalOptions options;
   options.count = scene.analysis.count;
   const auto start = std::chrono::steady_clock::now();

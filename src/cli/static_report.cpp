@@ -11,11 +11,17 @@
 namespace cosmems::internal {
 namespace {
 
-std::vector<double> ToVector(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+// + 0.0 turns -0 (a rotation the sign convention negates from zero, say) into 0.
+std::vector<double> ToJson(const Eigen::Vector3d& v) {
+  return {v.x() + 0.0, v.y() + 0.0, v.z() + 0.0};
+}
 
 template <int Dim>
 std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
-  RunHeader header{scene.source, AnalysisType::kStatic, Status::kOk, scene.model, 0, 0.0, {}};
+  RunHeader header;
+  header.scene = scene.source;
+  header.analysis = AnalysisType::kStatic;
+  header.model = scene.model;
   const LoadCase loads = MakeLoadCase(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
@@ -50,7 +56,7 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   if (results.gap && results.max_deflection >= *results.gap) {
     header.warnings.push_back(
         "the linear solution deflects " + Scientific(results.max_deflection) +
-        " m toward the substrate, at least the gap of " + Scientific(*results.gap) +
+        " m toward the substrate, at least the gap of " + Significant(*results.gap) +
         " m: it passes through the substrate (contact is not modelled in this version)");
   }
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
@@ -63,9 +69,9 @@ std::unique_ptr<StaticReport> StaticReport::Run(const Scene& scene) {
 }
 
 void StaticReport::AddResults(nlohmann::ordered_json& json) const {
-  if (results_.tip_displacement) json["tip_displacement"] = ToVector(*results_.tip_displacement);
-  json["midspan_displacement"] = ToVector(results_.midspan_displacement);
-  if (results_.tip_rotation) json["tip_rotation"] = ToVector(*results_.tip_rotation);
+  if (results_.tip_displacement) json["tip_displacement"] = ToJson(*results_.tip_displacement);
+  json["midspan_displacement"] = ToJson(results_.midspan_displacement);
+  if (results_.tip_rotation) json["tip_rotation"] = ToJson(*results_.tip_rotation);
   json["max_deflection"] = results_.max_deflection;
   json["max_stress_pa"] = results_.max_stress_pa;
   json["axial_force_n"] = results_.axial_force_n;
@@ -80,7 +86,7 @@ void StaticReport::PrintResults(std::ostream& out) const {
   out << "midspan displacement  " << Vector(results_.midspan_displacement) << " m\n";
   out << "max deflection        " << Scientific(results_.max_deflection)
       << " m toward the substrate";
-  if (results_.gap) out << " (gap " << Scientific(*results_.gap) << " m)";
+  if (results_.gap) out << " (gap " << Significant(*results_.gap) << " m)";
   out << "\n";
   out << "max stress            " << Scientific(results_.max_stress_pa) << " Pa\n";
   out << "axial force           " << Scientific(results_.axial_force_n) << " N\n";

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <optional>
-
-#include <Eigen/Core>
 
 #include "analysis_report.hpp"
 #include "cosmems/scene/scene.hpp"
@@ -12,14 +11,14 @@ namespace cosmems::internal {
 
 /// What a static solve reports, in SI (SCENES.md, static).
 struct StaticResults {
-  std::optional<Eigen::Vector3d> tip_displacement;  ///< m, cantilever only
-  std::optional<Eigen::Vector3d> tip_rotation;      ///< rad, cantilever only
+  std::optional<Eigen::Vector3d> tip_displacement;                 ///< m, cantilever only
+  std::optional<Eigen::Vector3d> tip_rotation;                     ///< rad, cantilever only
   Eigen::Vector3d midspan_displacement = Eigen::Vector3d::Zero();  ///< m
-  double max_deflection = 0.0;                      ///< m toward the substrate
+  double max_deflection = 0.0;                                     ///< m toward the substrate
   double max_stress_pa = 0.0;
-  double axial_force_n = 0.0;                       ///< in the first element, tension > 0
-  std::optional<double> gap;                        ///< m, the scene's
-  Eigen::MatrixXd nodes;  ///< one row per node: x, ux, uy, uz (m), rx, ry, rz (rad)
+  double axial_force_n = 0.0;  ///< in the first element, tension > 0
+  std::optional<double> gap;   ///< m, the scene's
+  Eigen::MatrixXd nodes;       ///< one row per node: x, ux, uy, uz (m), rx, ry, rz (rad)
 };
 
 /// Linear statics: the JSON fields of SCENES.md and deflection.csv.

@@ -21,8 +21,8 @@ std::string Significant(double value, int digits) {
 }
 
 std::string Vector(const Eigen::Vector3d& value) {
-  return "[" + Scientific(value.x()) + ", " + Scientific(value.y()) + ", " +
-         Scientific(value.z()) + "]";
+  return "[" + Scientific(value.x()) + ", " + Scientific(value.y()) + ", " + Scientific(value.z()) +
+         "]";
 }
 
 }  // namespace cosmems::internal

@@ -1,12 +1,12 @@
 #include "cosmems/scene/scene_loader.hpp"
 
+#include <toml++/toml.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-
-#include <toml++/toml.h>
 
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_error.hpp"
@@ -49,8 +49,8 @@ std::string EmbeddedSceneNames() {
 bool LooksLikePath(const std::string& text) {
   const std::string_view suffix = ".toml";
   return text.find('/') != std::string::npos ||
-         (text.size() >= suffix.size() && text.compare(text.size() - suffix.size(),
-                                                       suffix.size(), suffix) == 0);
+         (text.size() >= suffix.size() &&
+          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0);
 }
 
 }  // namespace
@@ -62,7 +62,7 @@ SceneOverride SceneOverride::Parse(const std::string& assignment) {
     throw SceneError(internal::KeyOrigins::kOverride, assignment, "",
                      "expected KEY=VALUE, such as model.elements=8");
   }
-  return {key, assignment.substr(equals + 1)};
+  return {key, Trim(assignment.substr(equals + 1))};
 }
 
 Scene LoadSceneText(std::string_view toml, const std::string& source,

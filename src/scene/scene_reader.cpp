@@ -1,10 +1,15 @@
 #include "scene_reader.hpp"
 
 #include <array>
+#include <initializer_list>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
-#include "cosmems/core/validation.hpp"
 #include "toml_field_reader.hpp"
+#include "toml_format.hpp"
 
 namespace cosmems::internal {
 namespace {
@@ -89,7 +94,7 @@ std::optional<double> ReadPositionOnBeam(const TomlFieldReader& r, const std::st
                                          const SceneStructure& structure) {
   const std::optional<double> x = r.OptionalNumber(key);
   r.Require(!x || (*x >= 0.0 && *x <= structure.length), key,
-            "must lie on the beam, in [0, " + FormatValue(structure.length) + "]");
+            "must lie on the beam, in [0, " + FormatNumber(structure.length) + "]");
   return x;
 }
 
@@ -103,44 +108,77 @@ bool HasEffect(const TomlFieldReader& r, const std::string& name,
   return true;
 }
 
+std::optional<ContactEffect> ReadContact(const TomlFieldReader& r) {
+  ContactEffect c;
+  if (!HasEffect(r, "contact", {"enabled"}, c.enabled)) return std::nullopt;
+  return c;
+}
+
+std::optional<StictionEffect> ReadStiction(const TomlFieldReader& r) {
+  StictionEffect s;
+  if (!HasEffect(r, "stiction", {"enabled", "adhesion_energy"}, s.enabled)) return std::nullopt;
+  s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy");
+  return s;
+}
+
+std::optional<ElectrostaticEffect> ReadElectrostatic(const TomlFieldReader& r,
+                                                     const SceneStructure& structure) {
+  ElectrostaticEffect s;
+  if (!HasEffect(r, "electrostatic",
+                 {"enabled", "voltage", "fringing", "electrode_start", "electrode_end"},
+                 s.enabled)) {
+    return std::nullopt;
+  }
+  s.voltage = r.OptionalNumber("effects.electrostatic.voltage");
+  s.fringing = r.Boolean("effects.electrostatic.fringing", s.fringing);
+  s.electrode_start = ReadPositionOnBeam(r, "effects.electrostatic.electrode_start", structure);
+  s.electrode_end = ReadPositionOnBeam(r, "effects.electrostatic.electrode_end", structure);
+  r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
+            "effects.electrostatic.electrode_end", "must exceed electrode_start");
+  return s;
+}
+
+std::optional<CasimirEffect> ReadCasimir(const TomlFieldReader& r) {
+  CasimirEffect c;
+  if (!HasEffect(r, "casimir", {"enabled"}, c.enabled)) return std::nullopt;
+  return c;
+}
+
+std::optional<VanDerWaalsEffect> ReadVanDerWaals(const TomlFieldReader& r) {
+  VanDerWaalsEffect v;
+  if (!HasEffect(r, "van_der_waals", {"enabled", "hamaker"}, v.enabled)) return std::nullopt;
+  v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker");
+  return v;
+}
+
+std::optional<DampingEffect> ReadDamping(const TomlFieldReader& r) {
+  DampingEffect d;
+  if (!HasEffect(r, "damping", {"enabled", "quality_factor", "rayleigh"}, d.enabled)) {
+    return std::nullopt;
+  }
+  d.quality_factor = r.OptionalPositive("effects.damping.quality_factor");
+  if (const auto rayleigh = r.OptionalNumbers("effects.damping.rayleigh", 2)) {
+    r.Require((*rayleigh)[0] >= 0.0 && (*rayleigh)[1] >= 0.0, "effects.damping.rayleigh",
+              "alpha and beta must be non-negative");
+    r.Require(!d.quality_factor, "effects.damping.rayleigh",
+              "give quality_factor or rayleigh, not both");
+    d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
+  }
+  return d;
+}
+
 SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structure) {
   SceneEffects e;
   if (!r.HasTable("effects")) return e;
   r.RejectUnknownKeys(
       "effects", {"contact", "stiction", "electrostatic", "casimir", "van_der_waals", "damping"},
       "effect");
-  if (ContactEffect c; HasEffect(r, "contact", {"enabled"}, c.enabled)) e.contact = c;
-  if (CasimirEffect c; HasEffect(r, "casimir", {"enabled"}, c.enabled)) e.casimir = c;
-  if (StictionEffect s; HasEffect(r, "stiction", {"enabled", "adhesion_energy"}, s.enabled)) {
-    s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy");
-    e.stiction = s;
-  }
-  if (ElectrostaticEffect s;
-      HasEffect(r, "electrostatic",
-                {"enabled", "voltage", "fringing", "electrode_start", "electrode_end"}, s.enabled)) {
-    s.voltage = r.OptionalNumber("effects.electrostatic.voltage");
-    s.fringing = r.Boolean("effects.electrostatic.fringing", s.fringing);
-    s.electrode_start = ReadPositionOnBeam(r, "effects.electrostatic.electrode_start", structure);
-    s.electrode_end = ReadPositionOnBeam(r, "effects.electrostatic.electrode_end", structure);
-    r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
-              "effects.electrostatic.electrode_end", "must exceed electrode_start");
-    e.electrostatic = s;
-  }
-  if (VanDerWaalsEffect v; HasEffect(r, "van_der_waals", {"enabled", "hamaker"}, v.enabled)) {
-    v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker");
-    e.van_der_waals = v;
-  }
-  if (DampingEffect d; HasEffect(r, "damping", {"enabled", "quality_factor", "rayleigh"}, d.enabled)) {
-    d.quality_factor = r.OptionalPositive("effects.damping.quality_factor");
-    if (const auto rayleigh = r.OptionalNumbers("effects.damping.rayleigh", 2)) {
-      r.Require((*rayleigh)[0] >= 0.0 && (*rayleigh)[1] >= 0.0, "effects.damping.rayleigh",
-                "alpha and beta must be non-negative");
-      r.Require(!d.quality_factor, "effects.damping.rayleigh",
-                "give quality_factor or rayleigh, not both");
-      d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
-    }
-    e.damping = d;
-  }
+  e.contact = ReadContact(r);
+  e.stiction = ReadStiction(r);
+  e.electrostatic = ReadElectrostatic(r, structure);
+  e.casimir = ReadCasimir(r);
+  e.van_der_waals = ReadVanDerWaals(r);
+  e.damping = ReadDamping(r);
   return e;
 }
 
@@ -149,9 +187,9 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   // The parameters of every documented analysis are known keys, so that a scene can carry
   // them while it runs another type (switching with --set analysis.type=...); only the chosen
   // analysis reads its own.
-  r.RejectUnknownKeys("analysis", {"type", "count", "duration", "time_step", "integrator",
-                                   "initial", "beta", "gamma", "alpha", "rho_inf", "voltage_max",
-                                   "rate"});
+  r.RejectUnknownKeys("analysis",
+                      {"type", "count", "duration", "time_step", "integrator", "initial", "beta",
+                       "gamma", "alpha", "rho_inf", "voltage_max", "rate"});
   SceneAnalysis a;
   a.type = r.RequiredChoice("analysis.type", kAnalysisTypes, "analysis type");
   if (a.type == AnalysisType::kModal) {
@@ -165,8 +203,8 @@ std::optional<SceneDevice> ReadDevice(const TomlFieldReader& r) {
   if (!r.HasTable("device")) return std::nullopt;
   r.RejectUnknownKeys("device", {"backend", "trajectory", "realtime"});
   SceneDevice d;
-  d.backend = r.OptionalChoice("device.backend", kDeviceBackends, "device backend")
-                  .value_or(d.backend);
+  d.backend =
+      r.OptionalChoice("device.backend", kDeviceBackends, "device backend").value_or(d.backend);
   d.trajectory = r.OptionalString("device.trajectory").value_or(d.trajectory);
   r.Require(!d.trajectory.empty(), "device.trajectory", "must not be empty");
   d.realtime = r.Boolean("device.realtime", d.realtime);
@@ -199,17 +237,17 @@ void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
   r.Require(scene.model.modes == 0, "model.modes",
             "modal reduction is " + unavailable + " (0: the full model)");
   r.Require(scene.structure.axial_load == 0.0, "structure.axial_load", unavailable);
-  r.Require(scene.analysis.type == AnalysisType::kStatic ||
-                scene.analysis.type == AnalysisType::kModal,
-            "analysis.type", unavailable + " (available: \"static\", \"modal\")");
+  r.Require(
+      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
+      "analysis.type", unavailable + " (available: \"static\", \"modal\")");
   const SceneEffects& e = scene.effects;
-  const std::pair<const char*, bool> effects[] = {
-      {"contact", e.contact && e.contact->enabled},
-      {"stiction", e.stiction && e.stiction->enabled},
-      {"electrostatic", e.electrostatic && e.electrostatic->enabled},
-      {"casimir", e.casimir && e.casimir->enabled},
-      {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled},
-      {"damping", e.damping && e.damping->enabled}};
+  const std::array<std::pair<const char*, bool>, 6> effects = {
+      {{"contact", e.contact && e.contact->enabled},
+       {"stiction", e.stiction && e.stiction->enabled},
+       {"electrostatic", e.electrostatic && e.electrostatic->enabled},
+       {"casimir", e.casimir && e.casimir->enabled},
+       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled},
+       {"damping", e.damping && e.damping->enabled}}};
   for (const auto& [name, enabled] : effects) {
     r.Require(!enabled, std::string("effects.") + name,
               "the effect is " + unavailable + " (remove the table or set enabled = false)");

@@ -127,8 +127,8 @@ int TomlFieldReader::Integer(const std::string& key, int fallback) const {
   if (node == nullptr) return fallback;
   Require(node->is_integer(), key, "expected an integer");
   const std::int64_t value = *node->value<std::int64_t>();
-  Require(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max(),
-          key, "out of range");
+  Require(value >= std::numeric_limits<int>::min() && value <= std::numeric_limits<int>::max(), key,
+          "out of range");
   return static_cast<int>(value);
 }
 
@@ -155,7 +155,7 @@ std::optional<std::vector<double>> TomlFieldReader::OptionalNumbers(const std::s
   Require(array != nullptr && array->size() == count, key, expected);
   std::vector<double> values;
   for (std::size_t i = 0; i < count; ++i) {
-    const toml::node& element = *array->get(i);
+    const toml::node& element = (*array)[i];
     Require(element.is_number(), key, expected);
     values.push_back(NumberValue(element));
     const std::string element_key = key + "[" + std::to_string(i) + "]";

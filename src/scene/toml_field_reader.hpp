@@ -1,13 +1,13 @@
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <array>
 #include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <toml++/toml.h>
 
 #include "key_origins.hpp"
 
@@ -64,7 +64,7 @@ class TomlFieldReader {
   std::optional<std::vector<double>> OptionalNumbers(const std::string& key,
                                                      std::size_t count) const;
 
-  /// A string naming one of `options` (spelled by ToString), or `fallback` when absent.
+  /// A string naming one of `options` (as ToString spells them); empty when absent.
   template <class Enum, std::size_t N>
   std::optional<Enum> OptionalChoice(const std::string& key, const std::array<Enum, N>& options,
                                      std::string_view what) const {
@@ -86,12 +86,13 @@ class TomlFieldReader {
     return *choice;
   }
 
+  /// Throws "KEY: missing required key".
   [[noreturn]] void FailMissing(const std::string& key) const;
 
+ private:
   /// "\"a\", \"b\" or \"c\"".
   static std::string QuotedList(const std::vector<std::string_view>& names);
 
- private:
   const toml::table& root_;
   const KeyOrigins& origins_;
 };

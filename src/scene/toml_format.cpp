@@ -1,11 +1,11 @@
 #include "toml_format.hpp"
 
+#include <array>
+#include <charconv>
 #include <cstdint>
 #include <cstdio>
 #include <sstream>
 #include <string_view>
-
-#include "cosmems/core/validation.hpp"
 
 namespace cosmems::internal {
 namespace {
@@ -28,9 +28,9 @@ std::string QuoteString(const std::string& text) {
         break;
       default:
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof escaped, "\\u%04X", static_cast<unsigned>(c));
-          out += escaped;
+          std::array<char, 8> escaped{};
+          std::snprintf(escaped.data(), escaped.size(), "\\u%04X", static_cast<unsigned>(c));
+          out += escaped.data();
         } else {
           out += c;
         }
@@ -40,13 +40,20 @@ std::string QuoteString(const std::string& text) {
 }
 
 std::string FormatFloat(double value) {
-  std::string text = FormatValue(value);
+  std::string text = FormatNumber(value);
   // "20" would read as an integer: keep floats recognisable, as TOML writes them.
   if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
   return text;
 }
 
 }  // namespace
+
+std::string FormatNumber(double value) {
+  std::array<char, 32> buffer{};
+  const std::to_chars_result end =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+  return {buffer.data(), end.ptr};
+}
 
 bool IsBareKey(std::string_view key) {
   if (key.empty()) return false;

@@ -1,9 +1,9 @@
 #pragma once
 
+#include <toml++/toml.h>
+
 #include <string>
 #include <string_view>
-
-#include <toml++/toml.h>
 
 namespace cosmems::internal {
 
@@ -11,6 +11,10 @@ namespace cosmems::internal {
 /// strings quoted and escaped, floats always with a '.', an exponent or inf/nan (20.0, not 20),
 /// arrays as [a, b] and tables inline as { key = value }.
 std::string FormatToml(const toml::node& node);
+
+/// The shortest text that reads back as exactly `value`, fixed or scientific, whichever is
+/// shorter: 20, 0.02, 2e-06, 1.69e+11.
+std::string FormatNumber(double value);
 
 /// Whether `key` is a TOML bare key: [A-Za-z0-9_-]+.
 bool IsBareKey(std::string_view key);

@@ -44,7 +44,8 @@ bool IsBareWord(std::string_view text) {
 // The value as a one-entry table { value = VALUE }.
 toml::table ParseValue(const SceneOverride& assignment) {
   try {
-    toml::table parsed = toml::parse(std::string(kValueKey) + " = " + assignment.value, "--set");
+    const std::string text = std::string(kValueKey) + " = " + assignment.value;
+    toml::table parsed = toml::parse(std::string_view(text), std::string_view("--set"));
     // More than one entry means VALUE smuggled in a line break and further keys.
     if (parsed.size() == 1) return parsed;
   } catch (const toml::parse_error&) {

@@ -121,6 +121,7 @@ TEST(ModalAnalysisTest, AxialModeOfAShortStubbyBar) {
   ModalOptions options;
   options.count = 6;
   const ModalResult r = SolveModal(model, options);
+  ASSERT_EQ(r.status, Status::kOk);  // a square section: the two bending planes are degenerate
   double axial = -1.0;
   for (const Mode& m : r.modes) {
     if (m.kind == ModeKind::kAxial) axial = m.frequency_hz;

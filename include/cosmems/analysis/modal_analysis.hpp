@@ -53,12 +53,15 @@ inline double RayleighFunctional(const Eigen::MatrixXd& kr, const std::vector<Ei
 /// spurious roots a truncated series adds far up the spectrum never enter. (A companion
 /// linearisation was measured to lose physical roots from order 3 on: its blocks span many
 /// decades and the nonsymmetric solve turned real roots complex.)
-inline void SolveProjected(const Eigen::MatrixXd& kr, const std::vector<Eigen::MatrixXd>& mr,
+/// Returns false when a wanted root did not settle within the iteration limit.
+inline bool SolveProjected(const Eigen::MatrixXd& kr, const std::vector<Eigen::MatrixXd>& mr,
                            int wanted, Eigen::VectorXd& lambda, Eigen::MatrixXd& z) {
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> linear(kr, mr[0]);
   lambda = linear.eigenvalues();
   z = linear.eigenvectors();
-  if (mr.size() == 1) return;
+  if (linear.info() != Eigen::Success) return false;
+  if (mr.size() == 1) return true;
+  bool all_settled = true;
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(kr.rows());
   for (int i = 0; i < wanted; ++i) {
     double l = lambda[i];
@@ -75,9 +78,11 @@ inline void SolveProjected(const Eigen::MatrixXd& kr, const std::vector<Eigen::M
       const bool settled = std::abs(next - l) <= 4.0 * std::numeric_limits<double>::epsilon() * std::abs(next);
       l = next;
       if (settled) break;
+      if (iteration == 49) all_settled = false;
     }
     lambda[i] = l;
   }
+  return all_settled;
 }
 
 }  // namespace internal
@@ -85,6 +90,9 @@ inline void SolveProjected(const Eigen::MatrixXd& kr, const std::vector<Eigen::M
 struct ModalOptions {
   int count = 4;                ///< modes wanted, lowest first
   double tolerance = 1e-12;     ///< relative change of every wanted eigenvalue between sweeps
+  /// ||K x - sum_j l^(j+1) M_2j x|| <= residual_tolerance * l ||M_0 x|| for every wanted mode:
+  /// vectors converge half as fast as eigenvalues, and modal dynamics needs them.
+  double residual_tolerance = 1e-10;
   int max_iterations = 500;     ///< sweeps before giving up with Status::kNotConverged
 };
 
@@ -94,42 +102,37 @@ struct Mode {
   Eigen::VectorXd shape;  ///< reduced, internal units, x^T M_0 x = 1, largest entry positive
 };
 
+/// Status::kNotConverged at series order >= 1 usually means modes were asked for beyond what the
+/// mesh resolves: where an element's frequency parameter rho A l^4 w^2 / EI passes 4.73^4 (its
+/// first clamped-clamped frequency) the power series diverges and the truncated polynomial has
+/// no real root to find. The modes below are still returned.
 struct ModalResult {
   Status status = Status::kOk;
   std::vector<Mode> modes;  ///< ascending frequency
   int iterations = 0;
 };
 
-/// The lowest natural frequencies and modes of a beam.
-///
-/// Order 0 solves K x = w^2 M_0 x. Order k >= 1 solves the polynomial eigenproblem
-/// (K - l M_0 - l^2 M_2 - ... - l^(k+1) M_2k) x = 0 in l = w^2 of the power-series elements.
-/// Both go by subspace iteration with Rayleigh-Ritz: each sweep applies K^-1 (one band back-
-/// solve per vector) to sum_j l_i^j M_2j x_i, the fixed point of x = l K^-1 sum_j l^j M_2j x, then
-/// projects onto the swept basis and solves the small projected problem (internal::SolveProjected).
-/// Mode i converges as l_i / l_(q+1) per sweep with q = max(2p, p + 8) vectors.
+namespace internal {
+
+/// The sweeps of SolveModal for q < n / 2 vectors; returns the status and fills the Ritz
+/// values `lambda`, vectors `x` (n x q) and the sweep count.
 template <int Dim>
-ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options = {}) {
-  ModalResult result;
+Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& cholesky,
+                         const ModalOptions& options, int p, int q, Eigen::VectorXd& lambda,
+                         Eigen::MatrixXd& x, int& iterations) {
   const int n = model.FreeDofCount();
-  const int p = std::min(options.count, n);
-  const int q = std::min(n, std::max(2 * p, p + 8));
   const int order = model.SeriesOrder();
-  if (p <= 0) return result;
-
-  const BandCholesky cholesky(model.Stiffness());
-  result.status = cholesky.info();
-  if (result.status != Status::kOk) return result;
-
   std::mt19937 random(20261121u);  // fixed seed: reproducible runs
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::MatrixXd x = Eigen::MatrixXd::NullaryExpr(n, q, [&]() { return uniform(random); });
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(q);
+  x = Eigen::MatrixXd::NullaryExpr(n, q, [&]() { return uniform(random); });
+  lambda = Eigen::VectorXd::Zero(q);
   Eigen::VectorXd previous = Eigen::VectorXd::Constant(q, -1.0);
+  Eigen::VectorXd residual(n);
+  double inertia = 0.0;
   Eigen::MatrixXd y(n, q), b(n, q), my(n, q);
   Eigen::VectorXd rhs(n), tmp(n);
 
-  for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
+  for (iterations = 1; iterations <= options.max_iterations; ++iterations) {
     for (int i = 0; i < q; ++i) {  // b_i = sum_j l_i^j M_2j x_i, y_i = K^-1 b_i
       auto b_i = b.col(i);
       b_i.setZero();
@@ -163,21 +166,71 @@ ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options 
     }
 
     Eigen::MatrixXd z;
-    internal::SolveProjected(kr, mr, p, lambda, z);
+    const bool settled = SolveProjected(kr, mr, p, lambda, z);
     x = y * z;
 
+    // Converged when every wanted eigenvalue has settled and its Ritz pair has a small
+    // residual r = K x - sum_j l^(j+1) M_2j x. K x comes from K Y = B (no product with K, so no
+    // cancellation for smooth x); a residual, unlike the change of a vector, also settles for
+    // repeated eigenvalues, whose vectors may turn freely within their eigenspace.
+    const Eigen::MatrixXd k_ritz =
+        b * r.triangularView<Eigen::Upper>().solve(z.leftCols(p));
     bool converged = true;
     for (int i = 0; i < p && converged; ++i) {
       converged = std::abs(lambda[i] - previous[i]) <= options.tolerance * std::abs(lambda[i]);
+      residual = k_ritz.col(i);
+      double power = lambda[i];
+      for (int j = 0; j <= order; ++j, power *= lambda[i]) {
+        model.Mass(j).Multiply(x.col(i), tmp);
+        if (j == 0) inertia = std::abs(power) * tmp.norm();
+        residual -= power * tmp;
+      }
+      converged = converged && residual.norm() <= options.residual_tolerance * inertia;
     }
     previous = lambda;
-    if (converged) break;
+    if (converged && settled) return Status::kOk;
   }
-  if (result.iterations > options.max_iterations) {
-    result.status = Status::kNotConverged;
-    result.iterations = options.max_iterations;
-  }
+  iterations = options.max_iterations;
+  return Status::kNotConverged;
+}
 
+}  // namespace internal
+
+/// The lowest natural frequencies and modes of a beam.
+///
+/// Order 0 solves K x = w^2 M_0 x. Order k >= 1 solves the polynomial eigenproblem
+/// (K - l M_0 - l^2 M_2 - ... - l^(k+1) M_2k) x = 0 in l = w^2 of the power-series elements.
+/// Both go by subspace iteration with Rayleigh-Ritz: each sweep applies K^-1 (one band back-
+/// solve per vector) to sum_j l_i^j M_2j x_i, the fixed point of x = l K^-1 sum_j l^j M_2j x, then
+/// projects onto the swept basis and solves the small projected problem (internal::SolveProjected).
+/// Mode i converges as l_i / l_(q+1) per sweep with q = max(2p, p + 8) vectors.
+template <int Dim>
+ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options = {}) {
+  ModalResult result;
+  const int n = model.FreeDofCount();
+  const int p = std::min(options.count, n);
+  const int q = std::min(n, std::max(2 * p, p + 8));
+  const int order = model.SeriesOrder();
+  if (p <= 0) return result;
+
+  const BandCholesky cholesky(model.Stiffness());
+  result.status = cholesky.info();
+  if (result.status != Status::kOk) return result;
+
+  Eigen::MatrixXd x;
+  Eigen::VectorXd lambda;
+  if (2 * q >= n) {
+    // The subspace would span half the space or more: solve the whole problem densely (n is
+    // at most a few dozen here), where subspace iteration would only lose the upper modes.
+    std::vector<Eigen::MatrixXd> dense;
+    for (int j = 0; j <= order; ++j) dense.push_back(model.Mass(j).ToDense());
+    result.iterations = 1;
+    if (!internal::SolveProjected(model.Stiffness().ToDense(), dense, p, lambda, x)) {
+      result.status = Status::kNotConverged;
+    }
+  } else {
+    result.status = internal::SubspaceIteration(model, cholesky, options, p, q, lambda, x, result.iterations);
+  }
   for (int i = 0; i < p; ++i) {
     Mode mode;
     Eigen::VectorXd shape = x.col(i);

@@ -38,6 +38,14 @@ inline void RequireInRange(const std::string& field, double value, double lower,
   }
 }
 
+/// Throws std::invalid_argument unless lower <= value <= upper.
+inline void RequireWithin(const std::string& field, double value, double lower, double upper) {
+  if (!(value >= lower && value <= upper)) {
+    throw std::invalid_argument(field + " = " + FormatValue(value) + ": must lie in [" +
+                                FormatValue(lower) + ", " + FormatValue(upper) + "]");
+  }
+}
+
 /// Throws std::invalid_argument unless value is finite.
 inline void RequireFinite(const std::string& field, double value) {
   if (!std::isfinite(value)) {

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "cosmems/core/status.hpp"
+#include "cosmems/linalg/band_kernels.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 
 namespace cosmems {
@@ -26,6 +27,7 @@ class BandCholesky {
     const int n = a.size();
     const int bw = a.bandwidth();
     factor_ = a.data();
+    inverse_diagonal_.resize(n);
     size_ = n;
     bandwidth_ = bw;
     status_ = Status::kOk;
@@ -42,11 +44,21 @@ class BandCholesky {
       }
       const double ljj = std::sqrt(d);
       factor_(0, j) = ljj;
+      inverse_diagonal_[j] = 1.0 / ljj;
       const int last = std::min(n - 1, j + bw);
       for (int i = j + 1; i <= last; ++i) {
         double s = factor_(i - j, j);
         for (int k = std::max(0, i - bw); k < j; ++k) s -= factor_(i - k, k) * factor_(j - k, k);
         factor_(i - j, j) = s / ljj;
+      }
+    }
+    // Fold the pivots into the factor for the solves (see internal::BandCholeskySolve).
+    forward_ = factor_;
+    backward_ = factor_;
+    for (int j = 0; j < n; ++j) {
+      for (int k = 1; k <= std::min(bw, n - 1 - j); ++k) {
+        forward_(k, j) *= inverse_diagonal_[j + k];
+        backward_(k, j) *= inverse_diagonal_[j];
       }
     }
     return *this;
@@ -56,19 +68,43 @@ class BandCholesky {
   int size() const { return size_; }
 
   /// Solves A x = b in place. Allocates nothing; call only when info() is kOk.
-  template <typename Derived>
-  void SolveInPlace(Eigen::MatrixBase<Derived>& b) const {
-    for (int j = 0; j < size_; ++j) {  // L y = b
-      b(j) /= factor_(0, j);
-      const int last = std::min(size_ - 1, j + bandwidth_);
-      for (int i = j + 1; i <= last; ++i) b(i) -= factor_(i - j, j) * b(j);
+  void SolveInPlace(Eigen::Ref<Eigen::VectorXd> b) const {
+    const int stride = static_cast<int>(forward_.rows());
+    const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
+      internal::BandCholeskySolve<decltype(w)::value>(forward_.data(), backward_.data(), stride,
+                                                      inverse_diagonal_.data(), size_, b.data());
+    });
+    if (fixed) return;
+    for (int i = 0; i < size_; ++i) {  // L y = b
+      double s = b[i] * inverse_diagonal_[i];
+      for (int k = std::min(bandwidth_, i); k >= 1; --k) s -= forward_(k, i - k) * b[i - k];
+      b[i] = s;
     }
     for (int j = size_ - 1; j >= 0; --j) {  // L^T x = y
-      const int last = std::min(size_ - 1, j + bandwidth_);
-      double s = b(j);
-      for (int i = j + 1; i <= last; ++i) s -= factor_(i - j, j) * b(i);
-      b(j) = s / factor_(0, j);
+      double s = b[j] * inverse_diagonal_[j];
+      for (int k = std::min(bandwidth_, size_ - 1 - j); k >= 1; --k) s -= backward_(k, j) * b[j + k];
+      b[j] = s;
     }
+  }
+
+  /// out = A^-1 (c - A1 x1 - A2 x2) with A1, A2 of this matrix's band (A1 optional): the
+  /// right-hand side is formed inside the forward sweep (internal::BandCholeskySolveResidual).
+  /// Allocates nothing.
+  void SolveResidual(const Eigen::VectorXd& c, const SymmetricBandMatrix* a1, const Eigen::VectorXd& x1,
+                     const SymmetricBandMatrix& a2, const Eigen::VectorXd& x2, Eigen::VectorXd& out) const {
+    const int stride = static_cast<int>(forward_.rows());
+    const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
+      internal::BandCholeskySolveResidual<decltype(w)::value>(
+          forward_.data(), backward_.data(), stride, inverse_diagonal_.data(), size_, c.data(),
+          a1 != nullptr ? a1->data().data() : nullptr, x1.data(), a2.data().data(), x2.data(),
+          static_cast<int>(a2.data().rows()), out.data());
+    });
+    if (fixed) return;
+    out.setZero();
+    a2.MultiplyAdd(x2, out);
+    if (a1 != nullptr) a1->MultiplyAdd(x1, out);
+    out = c - out;
+    SolveInPlace(out);
   }
 
   Eigen::VectorXd Solve(const Eigen::VectorXd& b) const {
@@ -79,6 +115,9 @@ class BandCholesky {
 
  private:
   Eigen::MatrixXd factor_;
+  Eigen::MatrixXd forward_;   ///< L(i, i-k) / L(i, i)
+  Eigen::MatrixXd backward_;  ///< L(j+k, j) / L(j, j)
+  Eigen::VectorXd inverse_diagonal_;
   int size_ = 0;
   int bandwidth_ = 0;
   Status status_ = Status::kNotPositiveDefinite;

@@ -9,7 +9,7 @@
 
 namespace cosmems {
 
-/// Sparse Cholesky by SuiteSparse CHOLMOD (supernodal, AMD ordering) for large or multi-beam
+/// Sparse Cholesky by SuiteSparse CHOLMOD (simplicial LL^T, AMD ordering) for large or multi-beam
 /// systems. CHOLMOD stays private to the compiled library: this interface speaks Eigen only.
 ///
 /// Eigen's idiom: AnalyzePattern() once per sparsity pattern, Factorize() per matrix with that
@@ -31,6 +31,8 @@ class CholmodSolver {
   }
 
   Status info() const;
+  /// Solves A x = b in place; allocates nothing once Factorize() has succeeded.
+  void SolveInPlace(Eigen::Ref<Eigen::VectorXd> b) const;
   Eigen::VectorXd Solve(const Eigen::VectorXd& b) const;
 
  private:

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include "cosmems/linalg/band_kernels.hpp"
+
 namespace cosmems {
 
 /// A symmetric matrix held by its lower band, LAPACK style: entry (i, j) with
@@ -20,6 +22,8 @@ class SymmetricBandMatrix {
   int size() const { return size_; }
   int bandwidth() const { return bandwidth_; }
   const Eigen::MatrixXd& data() const { return data_; }
+  /// The band storage itself, for combining matrices of one pattern (a M + b K) in one pass.
+  Eigen::MatrixXd& mutable_data() { return data_; }
 
   /// Entry (i, j) for any order of i and j; zero outside the band.
   double operator()(int i, int j) const {
@@ -34,17 +38,26 @@ class SymmetricBandMatrix {
   }
 
   /// y = A x. Allocates nothing.
-  template <typename In, typename Out>
-  void Multiply(const Eigen::MatrixBase<In>& x, Eigen::MatrixBase<Out>& y) const {
+  void Multiply(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
     y.setZero();
+    MultiplyAdd(x, y);
+  }
+
+  /// y += A x. Allocates nothing.
+  void MultiplyAdd(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
+    const int stride = static_cast<int>(data_.rows());
+    const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
+      internal::SymmetricBandMultiplyAdd<decltype(w)::value>(data_.data(), stride, size_, x.data(), y.data());
+    });
+    if (fixed) return;
     for (int j = 0; j < size_; ++j) {
-      y(j) += data_(0, j) * x(j);
+      double sum = data_(0, j) * x[j];
       const int last = std::min(size_ - 1, j + bandwidth_);
       for (int i = j + 1; i <= last; ++i) {
-        const double a = data_(i - j, j);
-        y(i) += a * x(j);
-        y(j) += a * x(i);
+        y[i] += data_(i - j, j) * x[j];
+        sum += data_(i - j, j) * x[i];
       }
+      y[j] += sum;
     }
   }
 

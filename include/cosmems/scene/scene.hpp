@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <optional>
 #include <string>
-
-#include <Eigen/Core>
 
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/scene/scene_effects.hpp"
@@ -93,10 +92,10 @@ struct SceneStructure {
 
 /// [material]: an isotropic linear-elastic material.
 struct SceneMaterial {
-  double young_modulus = 0.0;  ///< E [Pa]
-  double density = 0.0;        ///< rho [kg/m^3]
-  double poisson_ratio = 0.22; ///< nu [-], in (-1, 0.5)
-  bool plate_modulus = false;  ///< true: the beam bends with E / (1 - nu^2) (wide beams)
+  double young_modulus = 0.0;   ///< E [Pa]
+  double density = 0.0;         ///< rho [kg/m^3]
+  double poisson_ratio = 0.22;  ///< nu [-], in (-1, 0.5)
+  bool plate_modulus = false;   ///< true: the beam bends with E / (1 - nu^2) (wide beams)
 };
 
 /// [model]: how the beam is discretised.

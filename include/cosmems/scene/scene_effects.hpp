@@ -44,7 +44,7 @@ struct VanDerWaalsEffect {
 /// [effects.damping]: either a quality factor or Rayleigh damping C = alpha M + beta K.
 struct DampingEffect {
   bool enabled = true;
-  std::optional<double> quality_factor;          ///< Q [-], > 0
+  std::optional<double> quality_factor;           ///< Q [-], > 0
   std::optional<std::array<double, 2>> rayleigh;  ///< [alpha 1/s, beta s], each >= 0
 };
 

@@ -20,8 +20,8 @@ struct SceneOverride {
   std::string key;
   std::string value;
 
-  /// Splits "KEY=VALUE" at the first '='. Throws SceneError (source "--set") when there is no
-  /// '=' or KEY is empty.
+  /// Splits "KEY=VALUE" at the first '=' and trims blanks around both. Throws SceneError
+  /// (source "--set") when there is no '=' or KEY is empty.
   static SceneOverride Parse(const std::string& assignment);
 };
 

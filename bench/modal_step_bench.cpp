@@ -1,0 +1,34 @@
+// Per-step cost of exact modal propagation (one load pattern, uy at the tip read every step)
+// against the number of modes.
+#include "cosmems/analysis/output_point.hpp"
+#include "cosmems/time/modal_model.hpp"
+#include "reference_beam.hpp"
+
+namespace cosmems {
+namespace {
+
+void BM_ModalStep(benchmark::State& state) {
+  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 1));
+  LoadCase loads;
+  loads.points.push_back({200e-6, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  const Eigen::MatrixXd pattern = AssembleLoads(model, loads);
+  ModalOptions options;
+  options.count = static_cast<int>(state.range(0));
+  const ModalModel modal = MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
+  ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
+                             modal.ResidualFlexibility(model, pattern), 1e-6 / model.units().time);
+  const int n = model.FreeDofCount();
+  Eigen::VectorXd s = Eigen::VectorXd::Ones(1);
+  propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
+  const int tip = model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy);
+  for (auto _ : state) {
+    s[0] = -s[0];
+    const Status status = propagator.Step(s);
+    benchmark::DoNotOptimize(status);
+    benchmark::DoNotOptimize(propagator.DisplacementAt(tip));
+  }
+}
+BENCHMARK(BM_ModalStep)->ArgName("modes")->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16);
+
+}  // namespace
+}  // namespace cosmems

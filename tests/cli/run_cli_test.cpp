@@ -1,0 +1,395 @@
+#include "run_cli.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli_test_support.hpp"
+#include "cosmems/core/constants.hpp"
+#include "cosmems/core/status.hpp"
+#include "cosmems/scene/embedded_scenes.hpp"
+#include "cosmems/scene/scene_loader.hpp"
+#include "scene/scene_expectations.hpp"
+
+namespace cosmems {
+namespace {
+
+using testing::LineCount;
+using testing::ReadLines;
+using testing::TempDirectory;
+
+// The static solve reproduces Euler-Bernoulli statics at the nodes to round-off; the margin
+// covers the accumulated rounding of a 120-unknown band solve.
+constexpr double kStaticTolerance = 1e-9;
+// Modal: 20 power-series elements converge f1 far below this; the bound only catches a wrong
+// wiring (units, mode order), the core's own tests hold the accuracy.
+constexpr double kModalTolerance = 1e-6;
+
+struct CliOutcome {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+CliOutcome Cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  CliOutcome outcome;
+  outcome.code = RunCli(args, out, err);
+  outcome.out = out.str();
+  outcome.err = err.str();
+  return outcome;
+}
+
+nlohmann::json RunJson(std::vector<std::string> args, int expected_code = 0) {
+  args.insert(args.begin(), "run");
+  args.push_back("--json");
+  const CliOutcome outcome = Cli(args);
+  EXPECT_EQ(outcome.code, expected_code) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  return nlohmann::json::parse(outcome.out);  // throws unless stdout is exactly one JSON value
+}
+
+// Invalid input: exit status 2, nothing on stdout and exactly one line on stderr.
+std::string InvalidInput(const std::vector<std::string>& args) {
+  const CliOutcome outcome = Cli(args);
+  EXPECT_EQ(outcome.code, 2);
+  EXPECT_EQ(outcome.out, "");
+  EXPECT_EQ(LineCount(outcome.err), 1) << outcome.err;
+  EXPECT_EQ(outcome.err.rfind("cosmems: ", 0), 0u) << outcome.err;
+  return outcome.err;
+}
+
+void ExpectContains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
+}
+
+double SecondMoment(const Scene& scene) {
+  return scene.structure.width * std::pow(scene.structure.thickness, 3) / 12.0;
+}
+
+TEST(RunCliTest, StaticJsonCarriesTheContractFields) {
+  const nlohmann::json json = RunJson({"cantilever"});
+  EXPECT_EQ(json.at("scene"), "cantilever");
+  EXPECT_EQ(json.at("analysis"), "static");
+  EXPECT_EQ(json.at("status"), "ok");
+  const nlohmann::json& model = json.at("model");
+  EXPECT_EQ(model.at("theory"), "linear");
+  EXPECT_EQ(model.at("dimension"), 3);
+  EXPECT_EQ(model.at("elements"), 20);
+  EXPECT_EQ(model.at("series_order"), 1);
+  EXPECT_EQ(model.at("modes"), 0);
+  EXPECT_EQ(model.at("dofs"), 20 * 6);  // every node but the clamped one, six dofs each
+  EXPECT_GT(json.at("wall_time_s").get<double>(), 0.0);
+  for (const char* vector : {"tip_displacement", "midspan_displacement", "tip_rotation"}) {
+    ASSERT_TRUE(json.at(vector).is_array()) << vector;
+    EXPECT_EQ(json.at(vector).size(), 3u) << vector;
+  }
+  for (const char* number : {"max_deflection", "max_stress_pa", "axial_force_n"}) {
+    EXPECT_TRUE(json.at(number).is_number()) << number;
+  }
+  EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
+}
+
+TEST(RunCliTest, CantileverTipDeflectionIsPLCubedOverThreeEI) {
+  const Scene scene = LoadScene("cantilever");
+  const double p = -scene.loads.tip_force.y();
+  const double l = scene.structure.length;
+  const double ei = scene.material.young_modulus * SecondMoment(scene);
+  const double expected_uy = -p * l * l * l / (3.0 * ei);
+  const double expected_rz = -p * l * l / (2.0 * ei);
+  const nlohmann::json json = RunJson({"cantilever"});
+  EXPECT_NEAR(json["tip_displacement"][1].get<double>(), expected_uy,
+              kStaticTolerance * std::abs(expected_uy));
+  EXPECT_NEAR(json["tip_rotation"][2].get<double>(), expected_rz,
+              kStaticTolerance * std::abs(expected_rz));
+  EXPECT_NEAR(json["max_deflection"].get<double>(), -expected_uy,
+              kStaticTolerance * std::abs(expected_uy));
+  // Root stress M c / I with M = P L, c = t / 2.
+  const double stress = p * l * 0.5 * scene.structure.thickness / SecondMoment(scene);
+  EXPECT_NEAR(json["max_stress_pa"].get<double>(), stress, kStaticTolerance * stress);
+  EXPECT_NEAR(json["axial_force_n"].get<double>(), 0.0, 1e-20);
+}
+
+TEST(RunCliTest, BridgeReportsMidspanButNoTip) {
+  const Scene scene = LoadScene("microbridge");
+  const double p = -scene.loads.midspan_force.y();
+  const double l = scene.structure.length;
+  const double expected_uy =
+      -p * l * l * l / (192.0 * scene.material.young_modulus * SecondMoment(scene));
+  const nlohmann::json json = RunJson({"microbridge"});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_FALSE(json.contains("tip_displacement"));
+  EXPECT_FALSE(json.contains("tip_rotation"));
+  EXPECT_NEAR(json["midspan_displacement"][1].get<double>(), expected_uy,
+              kStaticTolerance * std::abs(expected_uy));
+  EXPECT_EQ(json.at("model").at("dofs"), 19 * 6);
+}
+
+TEST(RunCliTest, PlanarModelHasThreeDofsPerNode) {
+  const nlohmann::json json = RunJson({"cantilever", "--set", "model.dimension=2"});
+  EXPECT_EQ(json.at("model").at("dimension"), 2);
+  EXPECT_EQ(json.at("model").at("dofs"), 20 * 3);
+  EXPECT_EQ(json["tip_displacement"][2], 0.0);
+}
+
+TEST(RunCliTest, OverridesMayComeBeforeTheScene) {
+  const nlohmann::json json =
+      RunJson({"--set", "model.elements=4", "cantilever", "--set", "model.series_order=0"});
+  EXPECT_EQ(json.at("model").at("elements"), 4);
+  EXPECT_EQ(json.at("model").at("series_order"), 0);
+}
+
+TEST(RunCliTest, WarnsWhenTheLinearSolutionPassesThroughTheSubstrate) {
+  // 100x the tip force: about 12 um of deflection across a 2 um gap.
+  const nlohmann::json json = RunJson({"cantilever", "--set", "loads.tip_force=[0, -1e-5, 0]"});
+  EXPECT_EQ(json.at("status"), "ok");
+  ASSERT_EQ(json.at("warnings").size(), 1u);
+  const std::string warning = json["warnings"][0];
+  ExpectContains(warning, "passes through the substrate");
+  ExpectContains(warning, "contact is not modelled in this version");
+  EXPECT_FALSE(json.contains("collapsed"));
+  EXPECT_FALSE(json.contains("contact"));
+}
+
+TEST(RunCliTest, NoWarningWithoutASubstrate) {
+  std::string toml(FindEmbeddedScene("cantilever")->toml);
+  const std::size_t gap = toml.find("gap = ");
+  toml.erase(gap, toml.find('\n', gap) - gap);  // the gap line, comment and all
+  const TempDirectory dir;
+  const std::string path = (dir.path() / "no_gap.toml").string();
+  testing::WriteFile(path, toml);
+  const nlohmann::json json = RunJson({path, "--set", "loads.tip_force=[0, -1e-5, 0]"});
+  EXPECT_EQ(json.at("scene"), path);
+  EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
+}
+
+TEST(RunCliTest, ModalJsonListsAscendingFrequenciesAndKinds) {
+  const Scene scene = LoadScene("cantilever-modal");
+  const double l = scene.structure.length;
+  const double ei = scene.material.young_modulus * SecondMoment(scene);
+  const double rho_a = scene.material.density * scene.structure.width * scene.structure.thickness;
+  const double beta1 = 1.87510406871196;  // first root of cos(b) cosh(b) = -1
+  const double f1 = beta1 * beta1 / (2.0 * kPi) * std::sqrt(ei / (rho_a * l * l * l * l));
+
+  const nlohmann::json json = RunJson({"cantilever-modal"});
+  EXPECT_EQ(json.at("analysis"), "modal");
+  EXPECT_EQ(json.at("status"), "ok");
+  const nlohmann::json& frequencies = json.at("frequencies_hz");
+  const nlohmann::json& modes = json.at("modes");
+  ASSERT_EQ(frequencies.size(), 4u);
+  ASSERT_EQ(modes.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(modes[i].at("frequency_hz"), frequencies[i]);
+    const std::string kind = modes[i].at("kind");
+    EXPECT_TRUE(kind == "bending_y" || kind == "bending_z" || kind == "torsion" || kind == "axial")
+        << kind;
+    if (i > 0) {
+      EXPECT_GE(frequencies[i].get<double>(), frequencies[i - 1].get<double>());
+    }
+  }
+  EXPECT_EQ(modes[0].at("kind"), "bending_y");
+  EXPECT_NEAR(frequencies[0].get<double>(), f1, kModalTolerance * f1);
+}
+
+TEST(RunCliTest, ModalCountComesFromTheScene) {
+  const nlohmann::json json = RunJson({"cantilever", "--set", "analysis.type=modal", "--set",
+                                       "analysis.count=6", "--set", "model.dimension=2"});
+  EXPECT_EQ(json.at("frequencies_hz").size(), 6u);
+  for (const nlohmann::json& mode : json.at("modes")) {
+    EXPECT_TRUE(mode.at("kind") == "bending_y" || mode.at("kind") == "axial");
+  }
+}
+
+TEST(RunCliTest, SummaryIsReadable) {
+  const CliOutcome outcome = Cli({"run", "cantilever"});
+  EXPECT_EQ(outcome.code, 0);
+  EXPECT_EQ(outcome.err, "");
+  ExpectContains(outcome.out, "cantilever: static analysis");
+  ExpectContains(outcome.out, "tip deflection        -1.18");
+  ExpectContains(outcome.out, "e-07 m\n");
+  ExpectContains(outcome.out, "status     ok");
+  ExpectContains(outcome.out, " Pa\n");
+
+  const CliOutcome modal = Cli({"run", "cantilever-modal"});
+  EXPECT_EQ(modal.code, 0);
+  ExpectContains(modal.out, "kHz   bending_y");
+  EXPECT_EQ(LineCount(modal.out.substr(modal.out.find("mode   frequency"))), 5);
+}
+
+TEST(RunCliTest, SummaryShowsWarnings) {
+  const CliOutcome outcome = Cli({"run", "cantilever", "--set", "loads.tip_force=[0, -1e-5, 0]"});
+  EXPECT_EQ(outcome.code, 0);
+  ExpectContains(outcome.out, "warning: the linear solution deflects");
+}
+
+TEST(RunCliTest, StaticOutWritesTheDeflectionTable) {
+  const TempDirectory dir;
+  const std::filesystem::path out = dir.path() / "nested" / "results";
+  const nlohmann::json json = RunJson({"cantilever", "--out", out.string()});
+  const std::vector<std::string> lines = ReadLines(out / "deflection.csv");
+  ASSERT_EQ(lines.size(), 1u + 21u);  // header, one row per node
+  EXPECT_EQ(lines[0], "x_m,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
+  EXPECT_EQ(lines[1], "0,0,0,0,0,0,0");
+  std::istringstream last(lines.back());
+  std::vector<double> cells;
+  for (std::string cell; std::getline(last, cell, ',');) cells.push_back(std::stod(cell));
+  ASSERT_EQ(cells.size(), 7u);
+  EXPECT_DOUBLE_EQ(cells[0], 200e-6);
+  EXPECT_DOUBLE_EQ(cells[2], json["tip_displacement"][1].get<double>());
+  EXPECT_DOUBLE_EQ(cells[6], json["tip_rotation"][2].get<double>());
+}
+
+TEST(RunCliTest, ModalOutWritesModesAndNormalisedShapes) {
+  const TempDirectory dir;
+  const CliOutcome outcome = Cli({"run", "cantilever-modal", "--out", dir.path().string()});
+  EXPECT_EQ(outcome.code, 0) << outcome.err;
+  ExpectContains(outcome.out, "files written to " + dir.path().string());
+
+  const std::vector<std::string> modes = ReadLines(dir.path() / "modes.csv");
+  ASSERT_EQ(modes.size(), 1u + 4u);
+  EXPECT_EQ(modes[0], "mode,frequency_hz,kind");
+  EXPECT_EQ(modes[1].rfind("1,", 0), 0u);
+  EXPECT_NE(modes[1].find(",bending_y"), std::string::npos);
+
+  const std::vector<std::string> shapes = ReadLines(dir.path() / "mode_shapes.csv");
+  ASSERT_EQ(shapes.size(), 1u + 4u * 21u);
+  EXPECT_EQ(shapes[0], "mode,x_m,ux,uy,uz,rx,ry,rz");
+  std::vector<double> largest(4, 0.0);
+  for (std::size_t row = 1; row < shapes.size(); ++row) {
+    std::istringstream line(shapes[row]);
+    std::vector<double> cells;
+    for (std::string cell; std::getline(line, cell, ',');) cells.push_back(std::stod(cell));
+    ASSERT_EQ(cells.size(), 8u);
+    const int mode = static_cast<int>(cells[0]);
+    ASSERT_TRUE(mode >= 1 && mode <= 4);
+    for (int c = 2; c <= 4; ++c) {
+      largest[mode - 1] = std::max(largest[mode - 1], std::abs(cells[c]));
+    }
+  }
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (modes[i + 1].find(",torsion") == std::string::npos) {
+      EXPECT_DOUBLE_EQ(largest[i], 1.0) << "mode " << i + 1;
+    }
+  }
+}
+
+// A valid but absurd modulus: the deflection it implies, P L^3 / (3 E I) ~ 1e304 m and worse in
+// the solver's units, overflows, and the solver says so rather than returning garbage.
+const std::vector<std::string> kOverflowingScene = {"cantilever", "--set",
+                                                    "material.young_modulus=1e-300"};
+
+TEST(RunCliTest, NumericalFailureStillPrintsTheJsonAndExitsThree) {
+  const TempDirectory dir;
+  std::vector<std::string> args = kOverflowingScene;
+  args.insert(args.end(), {"--out", (dir.path() / "results").string()});
+  const nlohmann::json json = RunJson(args, 3);
+  EXPECT_EQ(json.at("status"), ToString(Status::kNonFinite));
+  EXPECT_EQ(json.at("model").at("dofs"), 120);
+  EXPECT_TRUE(json.contains("wall_time_s"));
+  EXPECT_FALSE(json.contains("tip_displacement"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results" / "deflection.csv"));
+}
+
+TEST(RunCliTest, NumericalFailureSummarySaysWhy) {
+  std::vector<std::string> args = kOverflowingScene;
+  args.insert(args.begin(), "run");
+  const CliOutcome outcome = Cli(args);
+  EXPECT_EQ(outcome.code, 3);
+  EXPECT_EQ(outcome.err, "");
+  ExpectContains(outcome.out, std::string("status     ") + ToString(Status::kNonFinite));
+  EXPECT_EQ(outcome.out.find("tip deflection"), std::string::npos);
+}
+
+TEST(RunCliTest, ScenesListsEachEmbeddedSceneOnOneLine) {
+  const CliOutcome outcome = Cli({"scenes"});
+  EXPECT_EQ(outcome.code, 0);
+  EXPECT_EQ(LineCount(outcome.out), static_cast<long>(EmbeddedScenes().size()));
+  for (const EmbeddedScene& scene : EmbeddedScenes()) {
+    ExpectContains(outcome.out, std::string(scene.name));
+    ExpectContains(outcome.out, std::string(scene.description) + "\n");
+  }
+  EXPECT_EQ(outcome.out.rfind("cantilever ", 0), 0u);
+  ExpectContains(outcome.out, "\nmicrobridge ");
+}
+
+TEST(RunCliTest, ShowPrintsAFileThatLoadsToTheSameScene) {
+  for (const char* name : {"cantilever", "microbridge", "cantilever-modal"}) {
+    SCOPED_TRACE(name);
+    const CliOutcome outcome = Cli({"show", name});
+    EXPECT_EQ(outcome.code, 0);
+    EXPECT_EQ(outcome.out, FindEmbeddedScene(name)->toml);
+    const TempDirectory dir;
+    const std::filesystem::path path = dir.path() / "copy.toml";
+    testing::WriteFile(path, outcome.out);
+    testing::ExpectSameScene(LoadSceneFile(path.string()), LoadScene(name));
+  }
+}
+
+TEST(RunCliTest, HelpAndVersion) {
+  const CliOutcome help = Cli({"--help"});
+  EXPECT_EQ(help.code, 0);
+  for (const char* command : {"run", "scenes", "show", "--version"})
+    ExpectContains(help.out, command);
+  const CliOutcome run_help = Cli({"run", "--help"});
+  EXPECT_EQ(run_help.code, 0);
+  for (const char* option : {"SCENE", "--set", "KEY=VALUE", "--json", "--out"}) {
+    ExpectContains(run_help.out, option);
+  }
+  const CliOutcome version = Cli({"--version"});
+  EXPECT_EQ(version.code, 0);
+  EXPECT_EQ(version.out, std::string("cosmems ") + COSMEMS_VERSION + "\n");
+}
+
+TEST(RunCliTest, SceneErrorsAreOneLineWithExitTwo) {
+  EXPECT_EQ(InvalidInput({"run", "cantilever", "--set", "model.elements=0"}),
+            "cosmems: --set: model.elements = 0: must be at least 1\n");
+  EXPECT_EQ(InvalidInput({"run", "cantilever", "--json", "--set", "model.theory=stretching"}),
+            "cosmems: --set: model.theory = \"stretching\": not available in this version (only "
+            "\"linear\" is)\n");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "structure.lenght=1e-4"}),
+                 "structure.lenght = 1e-04: unknown key");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=pullin"}),
+                 "analysis.type = \"pullin\": not available in this version");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "model.elements"}),
+                 "expected KEY=VALUE");
+  ExpectContains(InvalidInput({"run", "no-such-scene"}),
+                 "no-such-scene: neither an embedded scene");
+  ExpectContains(InvalidInput({"run", "missing.toml"}), "missing.toml: cannot open scene file");
+  ExpectContains(InvalidInput({"show", "no-such-scene"}), "no-such-scene: not an embedded scene");
+}
+
+TEST(RunCliTest, BadFilesAreOneLineWithExitTwo) {
+  const TempDirectory dir;
+  const std::string broken = (dir.path() / "broken.toml").string();
+  testing::WriteFile(broken, "[structure\nlength = 1\n");
+  ExpectContains(InvalidInput({"run", broken}), broken + ": invalid TOML at line 1");
+  const std::string wrong = (dir.path() / "wrong.toml").string();
+  std::string text(FindEmbeddedScene("cantilever")->toml);
+  text.replace(text.find("length = 200e-6"), 15, "length = -2e-6");
+  testing::WriteFile(wrong, text);
+  EXPECT_EQ(InvalidInput({"run", wrong}),
+            "cosmems: " + wrong + ": structure.length = -2e-06: must be positive\n");
+}
+
+TEST(RunCliTest, UsageErrorsAreOneLineWithExitTwo) {
+  ExpectContains(InvalidInput({}), "subcommand");
+  ExpectContains(InvalidInput({"run"}), "SCENE");
+  ExpectContains(InvalidInput({"run", "cantilever", "--bogus"}), "--bogus");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set"}), "--set");
+  ExpectContains(InvalidInput({"run", "cantilever", "--out", ""}), "DIR must not be empty");
+  EXPECT_EQ(InvalidInput({"frobnicate"}),
+            "cosmems: unknown command \"frobnicate\" (expected run, scenes, show)\n");
+}
+
+TEST(RunCliTest, UnwritableOutIsInvalidInput) {
+  const TempDirectory dir;
+  const std::filesystem::path file = dir.path() / "a_file";
+  testing::WriteFile(file, "");
+  ExpectContains(InvalidInput({"run", "cantilever", "--json", "--out", file.string()}),
+                 "--out " + file.string() + ": cannot create the directory");
+}
+
+}  // namespace
+}  // namespace cosmems

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "cosmems/scene/scene.hpp"
+
+namespace cosmems::testing {
+
+// Field-by-field equality of two scenes, Scene::source aside (it names where a scene came from,
+// not what it is). Exact comparisons: both sides are parsed from the same decimal text.
+inline void ExpectSameScene(const Scene& a, const Scene& b) {
+  EXPECT_EQ(a.structure.kind, b.structure.kind);
+  EXPECT_EQ(a.structure.length, b.structure.length);
+  EXPECT_EQ(a.structure.width, b.structure.width);
+  EXPECT_EQ(a.structure.thickness, b.structure.thickness);
+  EXPECT_EQ(a.structure.gap, b.structure.gap);
+  EXPECT_EQ(a.structure.axial_load, b.structure.axial_load);
+  EXPECT_EQ(a.material.young_modulus, b.material.young_modulus);
+  EXPECT_EQ(a.material.density, b.material.density);
+  EXPECT_EQ(a.material.poisson_ratio, b.material.poisson_ratio);
+  EXPECT_EQ(a.material.plate_modulus, b.material.plate_modulus);
+  EXPECT_EQ(a.model.theory, b.model.theory);
+  EXPECT_EQ(a.model.dimension, b.model.dimension);
+  EXPECT_EQ(a.model.elements, b.model.elements);
+  EXPECT_EQ(a.model.series_order, b.model.series_order);
+  EXPECT_EQ(a.model.modes, b.model.modes);
+  EXPECT_EQ(a.loads.tip_force, b.loads.tip_force);
+  EXPECT_EQ(a.loads.midspan_force, b.loads.midspan_force);
+  EXPECT_EQ(a.loads.distributed, b.loads.distributed);
+  EXPECT_EQ(a.loads.tip_moment, b.loads.tip_moment);
+  EXPECT_EQ(a.effects.contact.has_value(), b.effects.contact.has_value());
+  EXPECT_EQ(a.effects.stiction.has_value(), b.effects.stiction.has_value());
+  EXPECT_EQ(a.effects.electrostatic.has_value(), b.effects.electrostatic.has_value());
+  EXPECT_EQ(a.effects.casimir.has_value(), b.effects.casimir.has_value());
+  EXPECT_EQ(a.effects.van_der_waals.has_value(), b.effects.van_der_waals.has_value());
+  EXPECT_EQ(a.effects.damping.has_value(), b.effects.damping.has_value());
+  EXPECT_EQ(a.analysis.type, b.analysis.type);
+  EXPECT_EQ(a.analysis.count, b.analysis.count);
+  EXPECT_EQ(a.device.has_value(), b.device.has_value());
+}
+
+}  // namespace cosmems::testing

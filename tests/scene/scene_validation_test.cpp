@@ -1,0 +1,371 @@
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cosmems/scene/scene_error.hpp"
+#include "cosmems/scene/scene_loader.hpp"
+
+namespace cosmems {
+namespace {
+
+// The embedded cantilever as tables of `key = value` lines, so that each case can change,
+// add or delete one line of an otherwise valid file.
+class SceneText {
+ public:
+  SceneText() {
+    tables_ = {{"", {}},
+               {"structure",
+                {{"kind", "\"cantilever\""},
+                 {"length", "200e-6"},
+                 {"width", "20e-6"},
+                 {"thickness", "2e-6"},
+                 {"gap", "2e-6"}}},
+               {"material", {{"young_modulus", "169e9"}, {"density", "2330.0"}}},
+               {"model", {{"elements", "20"}}},
+               {"loads", {{"tip_force", "[0.0, -1e-7, 0.0]"}}},
+               {"analysis", {{"type", "\"static\""}}}};
+  }
+
+  // Sets the dotted key ("structure.length", "effects.stiction.adhesion_energy") to `value`,
+  // adding its table when missing.
+  SceneText& Set(const std::string& key, const std::string& value) {
+    const auto [table, name] = Split(key);
+    Lines& lines = Table(table);
+    for (auto& line : lines) {
+      if (line.first == name) {
+        line.second = value;
+        return *this;
+      }
+    }
+    lines.emplace_back(name, value);
+    return *this;
+  }
+
+  SceneText& Remove(const std::string& key) {
+    const auto [table, name] = Split(key);
+    Lines& lines = Table(table);
+    for (auto it = lines.begin(); it != lines.end(); ++it) {
+      if (it->first == name) {
+        lines.erase(it);
+        break;
+      }
+    }
+    return *this;
+  }
+
+  SceneText& RemoveTable(const std::string& table) {
+    for (auto it = tables_.begin(); it != tables_.end(); ++it) {
+      if (it->first == table) {
+        tables_.erase(it);
+        break;
+      }
+    }
+    return *this;
+  }
+
+  std::string Render() const {
+    std::string text;
+    for (const auto& [table, lines] : tables_) {
+      if (!table.empty()) text += "[" + table + "]\n";
+      for (const auto& [key, value] : lines) text += key + " = " + value + "\n";
+    }
+    return text;
+  }
+
+ private:
+  using Lines = std::vector<std::pair<std::string, std::string>>;
+
+  static std::pair<std::string, std::string> Split(const std::string& key) {
+    const std::size_t dot = key.rfind('.');
+    if (dot == std::string::npos) return {"", key};
+    return {key.substr(0, dot), key.substr(dot + 1)};
+  }
+
+  Lines& Table(const std::string& table) {
+    for (auto& entry : tables_) {
+      if (entry.first == table) return entry.second;
+    }
+    tables_.emplace_back(table, Lines{});
+    return tables_.back().second;
+  }
+
+  std::vector<std::pair<std::string, Lines>> tables_;
+};
+
+struct BadScene {
+  const char* name;
+  SceneText text;
+  std::string prefix;  // "KEY = VALUE" or "KEY" as the message must name them after "x.toml: "
+  std::string reason;  // a substring of what follows
+};
+
+void PrintTo(const BadScene& c, std::ostream* out) { *out << c.name; }
+
+std::string CaseName(const ::testing::TestParamInfo<BadScene>& c) { return c.param.name; }
+
+class SceneValidationTest : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(SceneValidationTest, RefusesWithOneLineNamingFileKeyAndValue) {
+  const BadScene& c = GetParam();
+  try {
+    LoadSceneText(c.text.Render(), "x.toml");
+    FAIL() << "accepted:\n" << c.text.Render();
+  } catch (const SceneError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.rfind("x.toml: " + c.prefix + ": ", 0), 0u) << message;
+    EXPECT_NE(message.find(c.reason), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(error.source(), "x.toml");
+  }
+}
+
+SceneText With(const std::string& key, const std::string& value) {
+  return SceneText().Set(key, value);
+}
+
+SceneText Without(const std::string& key) { return SceneText().Remove(key); }
+
+const std::string kUnavailable = "not available in this version";
+
+INSTANTIATE_TEST_SUITE_P(
+    MissingKeys, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"kind", Without("structure.kind"), "structure.kind", "missing required key"},
+        BadScene{"length", Without("structure.length"), "structure.length", "missing required key"},
+        BadScene{"width", Without("structure.width"), "structure.width", "missing required key"},
+        BadScene{"thickness", Without("structure.thickness"), "structure.thickness",
+                 "missing required key"},
+        BadScene{"modulus", Without("material.young_modulus"), "material.young_modulus",
+                 "missing required key"},
+        BadScene{"density", Without("material.density"), "material.density",
+                 "missing required key"},
+        BadScene{"type", Without("analysis.type"), "analysis.type", "missing required key"},
+        BadScene{"structure", SceneText().RemoveTable("structure"), "structure",
+                 "missing required table"},
+        BadScene{"material", SceneText().RemoveTable("material"), "material",
+                 "missing required table"},
+        BadScene{"analysis", SceneText().RemoveTable("analysis"), "analysis",
+                 "missing required table"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    WrongTypes, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"elements_string", With("model.elements", "\"ten\""), "model.elements = \"ten\"",
+                 "expected an integer"},
+        BadScene{"elements_float", With("model.elements", "20.0"), "model.elements = 20.0",
+                 "expected an integer"},
+        BadScene{"elements_huge", With("model.elements", "9999999999"),
+                 "model.elements = 9999999999", "out of range"},
+        BadScene{"length_string", With("structure.length", "\"long\""),
+                 "structure.length = \"long\"", "expected a number"},
+        BadScene{"kind_number", With("structure.kind", "3"), "structure.kind = 3",
+                 "expected a string"},
+        BadScene{"plate_modulus_number", With("material.plate_modulus", "1"),
+                 "material.plate_modulus = 1", "expected a boolean"},
+        BadScene{"structure_scalar", SceneText().RemoveTable("structure").Set("structure", "5"),
+                 "structure = 5", "expected a table"},
+        BadScene{"effects_scalar", With("effects", "true"), "effects = true", "expected a table"},
+        BadScene{"effect_scalar", With("effects.contact", "true"), "effects.contact = true",
+                 "expected a table"},
+        BadScene{"enabled_string", With("effects.contact.enabled", "\"no\""),
+                 "effects.contact.enabled = \"no\"", "expected a boolean"},
+        BadScene{"voltage_string",
+                 With("effects.electrostatic.voltage", "\"high\"")
+                     .Set("effects.electrostatic.enabled", "false"),
+                 "effects.electrostatic.voltage = \"high\"", "expected a number"},
+        BadScene{"trajectory_number", With("device.trajectory", "1"), "device.trajectory = 1",
+                 "expected a string"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    OutOfRange, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"negative_length", With("structure.length", "-2e-6"), "structure.length = -2e-06",
+                 "must be positive"},
+        BadScene{"zero_width", With("structure.width", "0"), "structure.width = 0",
+                 "must be positive"},
+        BadScene{"zero_thickness", With("structure.thickness", "0.0"), "structure.thickness = 0.0",
+                 "must be positive"},
+        BadScene{"zero_gap", With("structure.gap", "0.0"), "structure.gap = 0.0",
+                 "must be positive"},
+        BadScene{"negative_modulus", With("material.young_modulus", "-169e9"),
+                 "material.young_modulus = -1.69e+11", "must be positive"},
+        BadScene{"zero_density", With("material.density", "0"), "material.density = 0",
+                 "must be positive"},
+        BadScene{"infinite_length", With("structure.length", "inf"), "structure.length = inf",
+                 "must be finite"},
+        BadScene{"nan_axial_load", With("structure.axial_load", "nan"),
+                 "structure.axial_load = nan", "must be finite"},
+        BadScene{"poisson_half", With("material.poisson_ratio", "0.5"),
+                 "material.poisson_ratio = 0.5", "must lie in (-1, 0.5)"},
+        BadScene{"poisson_minus_one", With("material.poisson_ratio", "-1"),
+                 "material.poisson_ratio = -1", "must lie in (-1, 0.5)"},
+        BadScene{"zero_elements", With("model.elements", "0"), "model.elements = 0",
+                 "must be at least 1"},
+        BadScene{"too_many_elements", With("model.elements", "100001"), "model.elements = 100001",
+                 "must be at most 100000"},
+        BadScene{"dimension_one", With("model.dimension", "1"), "model.dimension = 1",
+                 "must be 2 or 3"},
+        BadScene{"series_order_negative", With("model.series_order", "-1"),
+                 "model.series_order = -1", "must lie in 0 ... 6"},
+        BadScene{"series_order_seven", With("model.series_order", "7"), "model.series_order = 7",
+                 "must lie in 0 ... 6"},
+        BadScene{"negative_modes", With("model.modes", "-1"), "model.modes = -1",
+                 "must be non-negative"},
+        BadScene{"zero_modal_count", With("analysis.type", "\"modal\"").Set("analysis.count", "0"),
+                 "analysis.count = 0", "must be at least 1"},
+        BadScene{"short_vector", With("loads.tip_force", "[0.0, 1.0]"),
+                 "loads.tip_force = [0.0, 1.0]", "expected an array of 3 numbers"},
+        BadScene{"long_vector", With("loads.midspan_force", "[0, 0, 0, 0]"),
+                 "loads.midspan_force = [0, 0, 0, 0]", "expected an array of 3 numbers"},
+        BadScene{"vector_of_strings", With("loads.distributed", "[0, \"a\", 0]"),
+                 "loads.distributed = [0, \"a\", 0]", "expected an array of 3 numbers"},
+        BadScene{"scalar_vector", With("loads.tip_moment", "1.0"), "loads.tip_moment = 1.0",
+                 "expected an array of 3 numbers"},
+        BadScene{"nan_component", With("loads.tip_force", "[0.0, nan, 0.0]"),
+                 "loads.tip_force[1] = nan", "must be finite"},
+        BadScene{"negative_adhesion",
+                 With("effects.stiction.enabled", "false")
+                     .Set("effects.stiction.adhesion_energy", "-0.02"),
+                 "effects.stiction.adhesion_energy = -0.02", "must be non-negative"},
+        BadScene{"electrode_off_the_beam",
+                 With("effects.electrostatic.enabled", "false")
+                     .Set("effects.electrostatic.electrode_end", "3e-4"),
+                 "effects.electrostatic.electrode_end = 3e-04",
+                 "must lie on the beam, in [0, 2e-04]"},
+        BadScene{"electrode_reversed",
+                 With("effects.electrostatic.enabled", "false")
+                     .Set("effects.electrostatic.electrode_start", "1e-4")
+                     .Set("effects.electrostatic.electrode_end", "5e-5"),
+                 "effects.electrostatic.electrode_end = 5e-05", "must exceed electrode_start"},
+        BadScene{"zero_hamaker",
+                 With("effects.van_der_waals.enabled", "false")
+                     .Set("effects.van_der_waals.hamaker", "0.0"),
+                 "effects.van_der_waals.hamaker = 0.0", "must be positive"},
+        BadScene{"two_dampings",
+                 With("effects.damping.enabled", "false")
+                     .Set("effects.damping.quality_factor", "100.0")
+                     .Set("effects.damping.rayleigh", "[1.0, 0.0]"),
+                 "effects.damping.rayleigh = [1.0, 0.0]", "not both"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    UnknownNames, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"kind", With("structure.kind", "\"plate\""), "structure.kind = \"plate\"",
+                 "unknown structure kind (expected \"cantilever\" or \"bridge\")"},
+        BadScene{"theory", With("model.theory", "\"foo\""), "model.theory = \"foo\"",
+                 "unknown theory (expected \"linear\", \"stretching\" or \"cosserat\")"},
+        BadScene{"analysis", With("analysis.type", "\"harmonic\""), "analysis.type = \"harmonic\"",
+                 "unknown analysis type (expected \"static\","},
+        BadScene{"backend", With("device.backend", "\"phantom\""), "device.backend = \"phantom\"",
+                 "unknown device backend (expected \"scripted\" or \"openhaptics\")"},
+        BadScene{"effect", With("effects.magnetic", "{}"), "effects.magnetic = {}",
+                 "unknown effect (expected contact, stiction, electrostatic, casimir, "
+                 "van_der_waals or damping)"},
+        BadScene{"table", With("substrate.gap", "1e-6"), "substrate = { gap = 1e-06 }",
+                 "unknown table (expected structure, material,"},
+        BadScene{"root_key", With("title", "\"my beam\""), "title = \"my beam\"", "unknown table"},
+        BadScene{"structure_typo", With("structure.lenght", "2e-4"), "structure.lenght = 2e-04",
+                 "unknown key (expected kind, length, width, thickness, gap or axial_load)"},
+        BadScene{"material_typo", With("material.poisson", "0.3"), "material.poisson = 0.3",
+                 "unknown key"},
+        BadScene{"model_typo", With("model.element", "10"), "model.element = 10", "unknown key"},
+        BadScene{"loads_typo", With("loads.tip_forces", "[0, 0, 0]"),
+                 "loads.tip_forces = [0, 0, 0]", "unknown key"},
+        BadScene{"analysis_typo", With("analysis.cont", "4"), "analysis.cont = 4", "unknown key"},
+        BadScene{"effect_typo", With("effects.stiction.adhesion", "0.02"),
+                 "effects.stiction.adhesion = 0.02", "unknown key"},
+        BadScene{"device_typo", With("device.speed", "1.0"), "device.speed = 1.0", "unknown key"},
+        BadScene{"quoted_key", With("structure.\"a b\"", "1"), "structure.\"a b\" = 1",
+                 "unknown key"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    NotYetAvailable, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"stretching", With("model.theory", "\"stretching\""),
+                 "model.theory = \"stretching\"", kUnavailable},
+        BadScene{"cosserat", With("model.theory", "\"cosserat\""), "model.theory = \"cosserat\"",
+                 kUnavailable},
+        BadScene{"modal_reduction", With("model.modes", "4"), "model.modes = 4", kUnavailable},
+        BadScene{"axial_load", With("structure.axial_load", "1e-6"), "structure.axial_load = 1e-06",
+                 kUnavailable},
+        BadScene{"buckling", With("analysis.type", "\"buckling\""), "analysis.type = \"buckling\"",
+                 kUnavailable},
+        BadScene{"pullin", With("analysis.type", "\"pullin\""), "analysis.type = \"pullin\"",
+                 kUnavailable},
+        BadScene{"transient", With("analysis.type", "\"transient\""),
+                 "analysis.type = \"transient\"", kUnavailable},
+        BadScene{"release", With("analysis.type", "\"release\""), "analysis.type = \"release\"",
+                 kUnavailable},
+        BadScene{"haptic", With("analysis.type", "\"haptic\""), "analysis.type = \"haptic\"",
+                 kUnavailable},
+        BadScene{"contact", With("effects.contact", "{}"), "effects.contact = {}", kUnavailable},
+        BadScene{"stiction", With("effects.stiction", "{ adhesion_energy = 0.02 }"),
+                 "effects.stiction = { adhesion_energy = 0.02 }", kUnavailable},
+        BadScene{"electrostatic", With("effects.electrostatic.voltage", "10.0"),
+                 "effects.electrostatic = { voltage = 10.0 }", kUnavailable},
+        BadScene{"casimir", With("effects.casimir.enabled", "true"),
+                 "effects.casimir = { enabled = true }", kUnavailable},
+        BadScene{"van_der_waals", With("effects.van_der_waals.hamaker", "1e-19"),
+                 "effects.van_der_waals = { hamaker = 1e-19 }", kUnavailable},
+        BadScene{"damping", With("effects.damping.quality_factor", "100.0"),
+                 "effects.damping = { quality_factor = 100.0 }", kUnavailable},
+        BadScene{"device", With("device.backend", "\"scripted\""),
+                 "device = { backend = \"scripted\" }", kUnavailable}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    LoadsTheModelCannotTake, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"planar_tip_force_z",
+                 With("model.dimension", "2").Set("loads.tip_force", "[0.0, 0.0, 1e-6]"),
+                 "loads.tip_force[2] = 1e-06", "out of plane for model.dimension = 2"},
+        BadScene{"planar_midspan_force_z",
+                 With("model.dimension", "2").Set("loads.midspan_force", "[0.0, 0.0, 1e-6]"),
+                 "loads.midspan_force[2] = 1e-06", "out of plane for model.dimension = 2"},
+        BadScene{"planar_distributed_z",
+                 With("model.dimension", "2").Set("loads.distributed", "[0.0, 0.0, 1.0]"),
+                 "loads.distributed[2] = 1.0", "out of plane for model.dimension = 2"},
+        BadScene{"planar_tip_moment_x",
+                 With("model.dimension", "2").Set("loads.tip_moment", "[1e-9, 0.0, 0.0]"),
+                 "loads.tip_moment[0] = 1e-09", "out of plane for model.dimension = 2"},
+        BadScene{"planar_tip_moment_y",
+                 With("model.dimension", "2").Set("loads.tip_moment", "[0.0, 1e-9, 0.0]"),
+                 "loads.tip_moment[1] = 1e-09", "out of plane for model.dimension = 2"},
+        BadScene{"bridge_tip_force", With("structure.kind", "\"bridge\""),
+                 "loads.tip_force = [0.0, -1e-07, 0.0]", "a bridge has no free end"},
+        BadScene{"bridge_tip_moment",
+                 With("structure.kind", "\"bridge\"")
+                     .Remove("loads.tip_force")
+                     .Set("loads.tip_moment", "[0, 0, 1e-9]"),
+                 "loads.tip_moment = [0, 0, 1e-09]", "a bridge has no free end"}),
+    CaseName);
+
+TEST(SceneValidationAcceptanceTest, AcceptsWhatThePlanarModelRepresents) {
+  const Scene scene = LoadSceneText(SceneText()
+                                        .Set("model.dimension", "2")
+                                        .Set("loads.tip_force", "[1e-7, -1e-7, 0.0]")
+                                        .Set("loads.tip_moment", "[0.0, 0.0, 1e-12]")
+                                        .Render(),
+                                    "x.toml");
+  EXPECT_EQ(scene.model.dimension, 2);
+}
+
+TEST(SceneValidationAcceptanceTest, AcceptsDisabledEffectsAndZeroTipLoadsOnABridge) {
+  const Scene scene = LoadSceneText(SceneText()
+                                        .Set("structure.kind", "\"bridge\"")
+                                        .Set("loads.tip_force", "[0, 0, 0]")
+                                        .Set("effects.contact.enabled", "false")
+                                        .Render(),
+                                    "x.toml");
+  EXPECT_EQ(scene.structure.kind, StructureKind::kBridge);
+  EXPECT_FALSE(scene.effects.contact->enabled);
+}
+
+}  // namespace
+}  // namespace cosmems

@@ -1,0 +1,95 @@
+// Steps allocate nothing. This executable interposes malloc, calloc and realloc (forwarding to
+// glibc's own), so every heap allocation counts: Eigen's, operator new's and CHOLMOD's C ones.
+// It is built only without sanitizers, which interpose the allocator themselves.
+#include <cstddef>
+
+#include <gtest/gtest.h>
+
+#include "cosmems/time/linear_newmark_integrator.hpp"
+#include "cosmems/time/modal_model.hpp"
+#include "test_beams.hpp"
+
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+
+static thread_local long g_allocations = 0;
+
+void* malloc(std::size_t size) {
+  ++g_allocations;
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) {
+  ++g_allocations;
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) {
+  ++g_allocations;
+  return __libc_realloc(pointer, size);
+}
+}
+
+namespace cosmems {
+namespace {
+
+// Runs `steps` calls of `step` and returns the heap allocations they made.
+template <typename F>
+long AllocationsDuring(int steps, F&& step) {
+  const long before = g_allocations;
+  for (int i = 0; i < steps; ++i) step();
+  return g_allocations - before;
+}
+
+TEST(NoAllocationTest, CounterSeesAllocations) {
+  const long before = g_allocations;
+  Eigen::VectorXd v(100);
+  v.setZero();
+  EXPECT_GT(g_allocations, before);
+}
+
+class LinearStepTest : public ::testing::TestWithParam<SpdSolverKind> {};
+
+TEST_P(LinearStepTest, NewmarkStepsAllocateNothing) {
+  const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 20, 1));
+  const int n = model.FreeDofCount();
+  LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {1e-3, 1e-4},
+                                     GeneralizedAlphaParameters::FromSpectralRadius(0.8), 1e-3,
+                                     GetParam());
+  ASSERT_EQ(integrator.solver_kind(), GetParam());
+  const Eigen::VectorXd f = Eigen::VectorXd::Constant(n, 1e-3);
+  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f), Status::kOk);
+  Status status = Status::kOk;
+  EXPECT_EQ(AllocationsDuring(100, [&] { status = integrator.Step(f); }), 0);
+  EXPECT_EQ(status, Status::kOk);
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, LinearStepTest,
+                         ::testing::Values(SpdSolverKind::kDense, SpdSolverKind::kBand,
+                                           SpdSolverKind::kCholmod));
+
+TEST(NoAllocationTest, ModalStepsAllocateNothing) {
+  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 20, 1));
+  LoadCase loads;
+  loads.points.push_back({test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  const Eigen::MatrixXd pattern = AssembleLoads(model, loads);
+  const ModalModel modal = MakeModalModel(model, SolveModal(model), DampingModel::QualityFactor(100));
+  ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
+                             modal.ResidualFlexibility(model, pattern), 1e-3);
+  const int n = model.FreeDofCount();
+  const Eigen::VectorXd s = Eigen::VectorXd::Ones(1);
+  propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
+  Eigen::VectorXd d(n);
+  Status status = Status::kOk;
+  EXPECT_EQ(AllocationsDuring(100, [&] {
+              status = propagator.Step(s);
+              propagator.Displacement(d);
+            }),
+            0);
+  EXPECT_EQ(status, Status::kOk);
+}
+
+}  // namespace
+}  // namespace cosmems
