@@ -1,11 +1,14 @@
 #pragma once
 
-/// The umbrella header: everything cosmems::core offers.
+/// The umbrella header: everything cosmems::core offers (cosmems::scene has its own headers).
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/analysis/mode_kind.hpp"
+#include "cosmems/analysis/output_point.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/analysis/step_timing.hpp"
+#include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/dof_map.hpp"
@@ -25,4 +28,16 @@
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/linalg/cholmod_solver.hpp"
+#include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
+#include "cosmems/time/damping_model.hpp"
+#include "cosmems/time/generalized_alpha_parameters.hpp"
+#include "cosmems/time/initial_acceleration.hpp"
+#include "cosmems/time/linear_newmark_integrator.hpp"
+#include "cosmems/time/load_time_function.hpp"
+#include "cosmems/time/modal_model.hpp"
+#include "cosmems/time/modal_propagator.hpp"
+#include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/nonlinear_force.hpp"
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "cosmems/time/rayleigh_damping.hpp"

@@ -87,26 +87,6 @@ class BandCholesky {
     }
   }
 
-  /// out = A^-1 (c - A1 x1 - A2 x2) with A1, A2 of this matrix's band (A1 optional): the
-  /// right-hand side is formed inside the forward sweep (internal::BandCholeskySolveResidual).
-  /// Allocates nothing.
-  void SolveResidual(const Eigen::VectorXd& c, const SymmetricBandMatrix* a1, const Eigen::VectorXd& x1,
-                     const SymmetricBandMatrix& a2, const Eigen::VectorXd& x2, Eigen::VectorXd& out) const {
-    const int stride = static_cast<int>(forward_.rows());
-    const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
-      internal::BandCholeskySolveResidual<decltype(w)::value>(
-          forward_.data(), backward_.data(), stride, inverse_diagonal_.data(), size_, c.data(),
-          a1 != nullptr ? a1->data().data() : nullptr, x1.data(), a2.data().data(), x2.data(),
-          static_cast<int>(a2.data().rows()), out.data());
-    });
-    if (fixed) return;
-    out.setZero();
-    a2.MultiplyAdd(x2, out);
-    if (a1 != nullptr) a1->MultiplyAdd(x1, out);
-    out = c - out;
-    SolveInPlace(out);
-  }
-
   Eigen::VectorXd Solve(const Eigen::VectorXd& b) const {
     Eigen::VectorXd x = b;
     SolveInPlace(x);

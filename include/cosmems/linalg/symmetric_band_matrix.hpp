@@ -43,21 +43,23 @@ class SymmetricBandMatrix {
     MultiplyAdd(x, y);
   }
 
-  /// y += A x. Allocates nothing.
-  void MultiplyAdd(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
+  /// y += alpha A x. Allocates nothing.
+  void MultiplyAdd(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y,
+                   double alpha = 1.0) const {
     const int stride = static_cast<int>(data_.rows());
     const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
-      internal::SymmetricBandMultiplyAdd<decltype(w)::value>(data_.data(), stride, size_, x.data(), y.data());
+      internal::SymmetricBandMultiplyAdd<decltype(w)::value>(data_.data(), stride, size_, x.data(),
+                                                             alpha, y.data());
     });
     if (fixed) return;
     for (int j = 0; j < size_; ++j) {
       double sum = data_(0, j) * x[j];
       const int last = std::min(size_ - 1, j + bandwidth_);
       for (int i = j + 1; i <= last; ++i) {
-        y[i] += data_(i - j, j) * x[j];
+        y[i] += alpha * data_(i - j, j) * x[j];
         sum += data_(i - j, j) * x[i];
       }
-      y[j] += sum;
+      y[j] += alpha * sum;
     }
   }
 

@@ -9,6 +9,7 @@
 #include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
+#include "cosmems/time/initial_acceleration.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
 
 namespace cosmems {
@@ -17,9 +18,9 @@ namespace cosmems {
 ///
 /// Every member of the generalised-alpha family solves, per step, the same matrix
 ///   S = ((1 - am) + (1 - af) gamma dt cM) M + ((1 - af) gamma dt cK + (1 - af) beta dt^2) K
-/// for a_(n+1), so S is factorised once at construction and a step is one back-solve whose
-/// right-hand side (band products with K, and with M unless the member needs none) is formed
-/// inside its forward sweep, then one pass of updates. Step() allocates nothing and throws nothing.
+/// for a_(n+1), so S is factorised once at construction and a step is a band product with K
+/// (and with M, unless the member needs none), one back-solve and one pass of updates.
+/// Step() allocates nothing and throws nothing.
 class LinearNewmarkIntegrator {
  public:
   /// `mass` and `stiffness` share one band pattern (as a BeamModel's do) and must outlive the
@@ -27,7 +28,8 @@ class LinearNewmarkIntegrator {
   LinearNewmarkIntegrator(const SymmetricBandMatrix& mass, const SymmetricBandMatrix& stiffness,
                           RayleighDamping damping, GeneralizedAlphaParameters parameters,
                           double time_step, SpdSolverKind solver = SpdSolverKind::kAuto)
-      : mass_(mass), stiffness_(stiffness), damping_(damping), p_(parameters), dt_(time_step) {
+      : mass_(mass), stiffness_(stiffness), damping_(damping), p_(parameters), dt_(time_step),
+        coefficients_(MakeCoefficients(parameters, damping, time_step)) {
     RequirePositive("time_step", time_step);
     const int n = mass.size();
     d_.setZero(n);
@@ -35,7 +37,6 @@ class LinearNewmarkIntegrator {
     a_.setZero(n);
     a_new_.setZero(n);
     f_.setZero(n);
-    rhs_.setZero(n);
     x_m_.setZero(n);
     x_k_.setZero(n);
     const double one_af = 1.0 - p_.alpha_f;
@@ -52,14 +53,9 @@ class LinearNewmarkIntegrator {
   Status Initialize(const Eigen::VectorXd& d0, const Eigen::VectorXd& v0,
                     const Eigen::VectorXd& f0) {
     if (status_ != Status::kOk) return status_;
-    stiffness_.Multiply(d0 + damping_.stiffness * v0, rhs_);
-    Eigen::VectorXd a0 = f0 - rhs_;
-    mass_.Multiply(v0, rhs_);
-    a0 -= damping_.mass * rhs_;
-    SpdSolver mass_solver;
-    if (mass_solver.Compute(mass_) != Status::kOk) return status_ = mass_solver.info();
-    mass_solver.SolveInPlace(a0);
-    if (!a0.allFinite()) return status_ = Status::kNonFinite;
+    Eigen::VectorXd a0;
+    status_ = InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0, a0);
+    if (status_ != Status::kOk) return status_;
     SetState(d0, v0, a0, f0);
     time_ = 0.0;
     return status_;
@@ -81,19 +77,32 @@ class LinearNewmarkIntegrator {
   [[nodiscard]] Status Step(const Eigen::VectorXd& f_next) {
     if (status_ != Status::kOk) return status_;
     const double af = p_.alpha_f;
-    rhs_ = (1.0 - af) * f_next + af * f_;
     // a_(n+1) = S^-1 (f_(n+1-af) - M x_m - K x_k); x_m, x_k were prepared by the last update.
-    solver_.SolveResidual(rhs_, uses_mass_ ? &mass_ : nullptr, x_m_, stiffness_, x_k_, a_new_);
+    a_new_ = (1.0 - af) * f_next + af * f_;
+    if (uses_mass_) mass_.MultiplyAdd(x_m_, a_new_, -1.0);
+    stiffness_.MultiplyAdd(x_k_, a_new_, -1.0);
+    solver_.SolveInPlace(a_new_);
     if (!a_new_.allFinite()) return Status::kNonFinite;
-    // One pass: Newmark's updates, and this row's x_m, x_k for the next step.
-    const double dd_a = dt_ * dt_ * (0.5 - p_.beta), dd_new = dt_ * dt_ * p_.beta;
-    const double dv_a = dt_ * (1.0 - p_.gamma), dv_new = dt_ * p_.gamma;
+    // One pass: Newmark's updates, and the next step's x_m, x_k. Coefficients live in locals
+    // and the vectors behind restrict pointers: otherwise every store could alias a member,
+    // forcing reloads and ruling out vectorisation.
+    const Coefficients c = coefficients_;
+    double* __restrict d = d_.data();
+    double* __restrict v = v_.data();
+    double* __restrict a = a_.data();
+    double* __restrict f = f_.data();
+    double* __restrict xm = x_m_.data();
+    double* __restrict xk = x_k_.data();
+    const double* __restrict an = a_new_.data();
+    const double* __restrict fn = f_next.data();
     for (Eigen::Index i = 0; i < d_.size(); ++i) {
-      d_[i] += dt_ * v_[i] + dd_a * a_[i] + dd_new * a_new_[i];
-      v_[i] += dv_a * a_[i] + dv_new * a_new_[i];
-      a_[i] = a_new_[i];
-      f_[i] = f_next[i];
-      PrepareRow(i);
+      d[i] += c.dt * v[i] + c.dd_a * a[i] + c.dd_new * an[i];
+      v[i] += c.dv_a * a[i] + c.dv_new * an[i];
+      a[i] = an[i];
+      f[i] = fn[i];
+      const double vp = v[i] + c.vp_a * a[i];
+      xm[i] = c.am * a[i] + c.cm * vp;
+      xk[i] = c.ck * vp + d[i] + c.dp_v * v[i] + c.dp_a * a[i];
     }
     time_ += dt_;
     return Status::kOk;
@@ -108,14 +117,34 @@ class LinearNewmarkIntegrator {
   SpdSolverKind solver_kind() const { return solver_.kind(); }
 
  private:
-  // The vectors the next step multiplies by M and K, at row i: with
+  // The step's constant coefficients. The vectors the next step multiplies by M and K are, with
   // vp = v + (1-af)(1-gamma) dt a and dp = d + (1-af)(dt v + dt^2 (1/2-beta) a),
   // x_m = am a + cM vp and x_k = cK vp + dp.
+  struct Coefficients {
+    double dt, dd_a, dd_new, dv_a, dv_new, vp_a, am, cm, ck, dp_v, dp_a;
+  };
+
+  static Coefficients MakeCoefficients(const GeneralizedAlphaParameters& p, RayleighDamping c,
+                                       double dt) {
+    const double one_af = 1.0 - p.alpha_f;
+    return {dt,
+            dt * dt * (0.5 - p.beta),
+            dt * dt * p.beta,
+            dt * (1.0 - p.gamma),
+            dt * p.gamma,
+            one_af * (1.0 - p.gamma) * dt,
+            p.alpha_m,
+            c.mass,
+            c.stiffness,
+            one_af * dt,
+            one_af * dt * dt * (0.5 - p.beta)};
+  }
+
   void PrepareRow(Eigen::Index i) {
-    const double one_af = 1.0 - p_.alpha_f;
-    const double vp = v_[i] + one_af * (1.0 - p_.gamma) * dt_ * a_[i];
-    x_m_[i] = p_.alpha_m * a_[i] + damping_.mass * vp;
-    x_k_[i] = damping_.stiffness * vp + d_[i] + one_af * (dt_ * v_[i] + dt_ * dt_ * (0.5 - p_.beta) * a_[i]);
+    const Coefficients& c = coefficients_;
+    const double vp = v_[i] + c.vp_a * a_[i];
+    x_m_[i] = c.am * a_[i] + c.cm * vp;
+    x_k_[i] = c.ck * vp + d_[i] + c.dp_v * v_[i] + c.dp_a * a_[i];
   }
 
   const SymmetricBandMatrix& mass_;
@@ -126,8 +155,9 @@ class LinearNewmarkIntegrator {
   double time_ = 0.0;
   SpdSolver solver_;
   Status status_ = Status::kOk;
+  Coefficients coefficients_;
   bool uses_mass_ = true;  ///< x_m = am a + cM vp is not identically zero
-  Eigen::VectorXd d_, v_, a_, a_new_, f_, rhs_, x_m_, x_k_;
+  Eigen::VectorXd d_, v_, a_, a_new_, f_, x_m_, x_k_;
 };
 
 }  // namespace cosmems

@@ -9,6 +9,7 @@
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
+#include "cosmems/time/initial_acceleration.hpp"
 #include "cosmems/time/newton_options.hpp"
 #include "cosmems/time/nonlinear_force.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
@@ -52,14 +53,7 @@ class NonlinearNewmarkIntegrator {
     r_.setZero();
     tangent_.mutable_data().setZero();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
-    stiffness_.Multiply(d0 + damping_.stiffness * v0, work_);
-    a_ = f0 - work_ - r_;
-    mass_.Multiply(v0, work_);
-    a_ -= damping_.mass * work_;
-    const BandCholesky mass_factor(mass_);
-    if (mass_factor.info() != Status::kOk) return mass_factor.info();
-    mass_factor.SolveInPlace(a_);
-    return a_.allFinite() ? Status::kOk : Status::kNonFinite;
+    return InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0 - r_, a_);
   }
 
   /// Advances by dt to the load f_next. On failure the state stays at the step's start.

@@ -1,0 +1,49 @@
+// Prints the relative error of the first four bending frequencies of the reference cantilever
+// and bridge (planar model) against the roots of cos x cosh x = -/+1, for meshes of 1 ... 40
+// elements and series orders 0 ... 3: what each term of the power series buys on a mesh.
+#include <cmath>
+#include <cstdio>
+
+#include <cosmems/cosmems.hpp>
+
+namespace {
+
+// The n-th root of cos x cosh x = sign by Newton from the asymptotic root.
+double FrequencyRoot(int n, double sign) {
+  double x = (sign < 0 ? 2 * n - 1 : 2 * n + 1) * cosmems::kPi / 2;
+  for (int i = 0; i < 50; ++i) {
+    x -= (std::cos(x) * std::cosh(x) - sign) / (-std::sin(x) * std::cosh(x) + std::cos(x) * std::sinh(x));
+  }
+  return x;
+}
+
+}  // namespace
+
+int main() {
+  const cosmems::Material silicon{169e9, 2330.0, 0.22};
+  const cosmems::RectangularSection section{20e-6, 2e-6};
+  const double length = 200e-6;
+  const double ei = silicon.young_modulus * section.SecondMomentZ();
+  const double rho_a = silicon.density * section.Area();
+  for (const auto kind : {cosmems::StructureKind::kCantilever, cosmems::StructureKind::kBridge}) {
+    const bool bridge = kind == cosmems::StructureKind::kBridge;
+    std::printf("%s: relative error of modes 1-4\n", bridge ? "bridge" : "cantilever");
+    std::printf("%9s %6s %10s %10s %10s %10s\n", "elements", "order", "mode 1", "mode 2", "mode 3", "mode 4");
+    for (int order = 0; order <= 3; ++order) {
+      for (int elements : {2, 4, 8, 20, 40}) {
+        const cosmems::BeamModel<2> model(cosmems::MakeStructure(kind, length, silicon, section, elements, order));
+        cosmems::ModalOptions options;
+        options.count = 4;
+        const cosmems::ModalResult result = cosmems::SolveModal(model, options);
+        std::printf("%9d %6d", elements, order);
+        for (std::size_t i = 0; i < result.modes.size(); ++i) {
+          const double x = FrequencyRoot(static_cast<int>(i) + 1, bridge ? 1.0 : -1.0);
+          const double exact = x * x / (2 * cosmems::kPi * length * length) * std::sqrt(ei / rho_a);
+          std::printf(" %10.1e", std::abs(result.modes[i].frequency_hz - exact) / exact);
+        }
+        std::printf("%s\n", result.status == cosmems::Status::kOk ? "" : "  (not converged)");
+      }
+    }
+  }
+  return 0;
+}
