@@ -1,7 +1,9 @@
-// Per-step cost of the linear fast path (factor once, back-solve per step) against element
-// count, for each factorisation: the table behind SpdSolver's size thresholds.
+// Per-step cost of the linear fast path (factor once, back-solve per step; average
+// acceleration, undamped) against element count, for each factorisation: the measurements
+// behind SpdSolver's automatic choice.
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "reference_beam.hpp"
+#include "step_extremes.hpp"
 
 namespace cosmems {
 namespace {
@@ -20,11 +22,13 @@ void BM_LinearNewmarkStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  for (auto _ : state) {
+  auto step = [&] {
     const Status status = integrator.Step(f);
     benchmark::DoNotOptimize(status);
     benchmark::DoNotOptimize(integrator.displacement().data());
-  }
+  };
+  for (auto _ : state) step();
+  bench::RecordStepExtremes(state, step);
   state.counters["dofs"] = n;
 }
 

@@ -3,6 +3,7 @@
 #include "cosmems/analysis/output_point.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "reference_beam.hpp"
+#include "step_extremes.hpp"
 
 namespace cosmems {
 namespace {
@@ -21,12 +22,14 @@ void BM_ModalStep(benchmark::State& state) {
   Eigen::VectorXd s = Eigen::VectorXd::Ones(1);
   propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
   const int tip = model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy);
-  for (auto _ : state) {
+  auto step = [&] {
     s[0] = -s[0];
     const Status status = propagator.Step(s);
     benchmark::DoNotOptimize(status);
     benchmark::DoNotOptimize(propagator.DisplacementAt(tip));
-  }
+  };
+  for (auto _ : state) step();
+  bench::RecordStepExtremes(state, step);
 }
 BENCHMARK(BM_ModalStep)->ArgName("modes")->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Arg(16);
 

@@ -31,6 +31,14 @@ std::string CsvFile::Number(double value) {
   return {buffer.data(), end.ptr};
 }
 
+std::string CsvFile::Number(double value, int significant_digits) {
+  std::array<char, 48> buffer{};
+  const std::to_chars_result end =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0,
+                    std::chars_format::general, significant_digits);
+  return {buffer.data(), end.ptr};
+}
+
 void CsvFile::Check() {
   if (!file_) {
     throw CliInputError("--out: " + path_.string() + ": cannot write the file");

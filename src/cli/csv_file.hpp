@@ -20,6 +20,8 @@ class CsvFile {
 
   /// A number in the shortest form that reads back exactly (0.0002, 1.5e-07).
   static std::string Number(double value);
+  /// A number rounded to `significant_digits`, trailing zeros dropped (3e-06, 0.000125).
+  static std::string Number(double value, int significant_digits);
 
  private:
   void Check();

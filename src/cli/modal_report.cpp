@@ -7,6 +7,7 @@
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
+#include "ignored_settings.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -33,6 +34,7 @@ std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
   header.scene = scene.source;
   header.analysis = AnalysisType::kModal;
   header.model = scene.model;
+  header.warnings = IgnoredSettingWarnings(scene);
   ModalOptions options;
   options.count = scene.analysis.count;
   const auto start = std::chrono::steady_clock::now();

@@ -12,6 +12,7 @@
 #include "cosmems/scene/scene_loader.hpp"
 #include "modal_report.hpp"
 #include "static_report.hpp"
+#include "transient_report.hpp"
 
 namespace cosmems {
 namespace {
@@ -42,9 +43,10 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
       return internal::StaticReport::Run(scene);
     case AnalysisType::kModal:
       return internal::ModalReport::Run(scene);
+    case AnalysisType::kTransient:
+      return internal::TransientReport::Run(scene);
     case AnalysisType::kBuckling:
     case AnalysisType::kPullin:
-    case AnalysisType::kTransient:
     case AnalysisType::kRelease:
     case AnalysisType::kHaptic:
       break;
@@ -128,7 +130,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->allow_extra_args(false)  // one value per --set, so SCENE may follow it
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   run->add_flag("--json", request.json, "Print one JSON object on stdout and nothing else");
-  run->add_option("--out", request.out, "Write CSV files (deflection, modes) into DIR")
+  run->add_option("--out", request.out, "Write CSV files (deflection, modes, history) into DIR")
       ->type_name("DIR")
       ->check(CLI::Validator(
           [](const std::string& directory) {

@@ -6,6 +6,7 @@
 #include "cosmems/analysis/static_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
+#include "ignored_settings.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -22,6 +23,7 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   header.scene = scene.source;
   header.analysis = AnalysisType::kStatic;
   header.model = scene.model;
+  header.warnings = IgnoredSettingWarnings(scene);
   const LoadCase loads = MakeLoadCase(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));

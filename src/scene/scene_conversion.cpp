@@ -1,6 +1,15 @@
 #include "cosmems/scene/scene_conversion.hpp"
 
 namespace cosmems {
+namespace {
+
+// Where a transient analysis records uy: the free end of a cantilever, the middle of a bridge,
+// where a load on either moves the beam most.
+double TransientOutputX(const SceneStructure& structure) {
+  return structure.kind == StructureKind::kCantilever ? structure.length : 0.5 * structure.length;
+}
+
+}  // namespace
 
 Material EffectiveMaterial(const SceneMaterial& material) {
   Material out;
@@ -33,6 +42,68 @@ LoadCase MakeLoadCase(const Scene& scene) {
     out.points.push_back(PointLoad{0.5 * length, loads.midspan_force, Eigen::Vector3d::Zero()});
   }
   out.distributed = loads.distributed;
+  return out;
+}
+
+DampingModel MakeDampingModel(const Scene& scene) {
+  const std::optional<DampingEffect>& damping = scene.effects.damping;
+  if (!damping || !damping->enabled) return {};
+  if (damping->quality_factor) return DampingModel::QualityFactor(*damping->quality_factor);
+  return DampingModel::Rayleigh((*damping->rayleigh)[0], (*damping->rayleigh)[1]);
+}
+
+LoadTimeFunction MakeLoadTimeFunction(const Scene& scene) {
+  LoadTimeFunction out;
+  if (!scene.loads.time_function) return out;
+  const SceneTimeFunction& f = *scene.loads.time_function;
+  switch (f.kind) {
+    case TimeFunctionKind::kStep:
+      out.kind = LoadTimeFunction::Kind::kStep;
+      break;
+    case TimeFunctionKind::kRamp:
+      out.kind = LoadTimeFunction::Kind::kRamp;
+      out.ramp_time = f.ramp_time;
+      break;
+    case TimeFunctionKind::kSine:
+      out.kind = LoadTimeFunction::Kind::kSine;
+      out.frequency = f.frequency;
+      break;
+  }
+  return out;
+}
+
+GeneralizedAlphaParameters MakeIntegratorParameters(const SceneAnalysis& analysis) {
+  switch (analysis.integrator) {
+    case Integrator::kNewmark:
+      return GeneralizedAlphaParameters::Newmark(analysis.beta, analysis.gamma);
+    case Integrator::kHht:
+      return GeneralizedAlphaParameters::Hht(analysis.alpha);
+    case Integrator::kGeneralizedAlpha:
+      return GeneralizedAlphaParameters::FromSpectralRadius(analysis.rho_inf);
+    case Integrator::kCentralDifference:
+      return GeneralizedAlphaParameters::CentralDifference();
+    case Integrator::kModal:
+      break;
+  }
+  return {};
+}
+
+TransientOptions MakeTransientOptions(const Scene& scene) {
+  const SceneAnalysis& analysis = scene.analysis;
+  TransientOptions out;
+  out.duration = analysis.duration;
+  out.time_step = analysis.time_step;
+  if (analysis.integrator == Integrator::kModal) {
+    out.path = TimePath::kModal;
+    out.modes = scene.model.modes;
+  } else {
+    out.path = TimePath::kNewmarkFamily;
+    out.parameters = MakeIntegratorParameters(analysis);
+  }
+  out.start_static = analysis.initial == InitialState::kStatic;
+  out.time_function = MakeLoadTimeFunction(scene);
+  out.damping = MakeDampingModel(scene);
+  out.output_x = TransientOutputX(scene.structure);
   return out;
 }
 

@@ -1,6 +1,7 @@
 #include "scene_reader.hpp"
 
 #include <array>
+#include <cmath>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -21,11 +22,20 @@ constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::k
                                        AnalysisType::kTransient, AnalysisType::kRelease,
                                        AnalysisType::kHaptic};
 constexpr std::array kDeviceBackends = {DeviceBackend::kScripted, DeviceBackend::kOpenHaptics};
+constexpr std::array kIntegrators = {Integrator::kNewmark, Integrator::kHht,
+                                     Integrator::kGeneralizedAlpha, Integrator::kCentralDifference,
+                                     Integrator::kModal};
+constexpr std::array kInitialStates = {InitialState::kRest, InitialState::kStatic};
+constexpr std::array kTimeFunctions = {TimeFunctionKind::kStep, TimeFunctionKind::kRamp,
+                                       TimeFunctionKind::kSine};
 
 // Guards against a typo such as 20000000 exhausting memory; far beyond any useful mesh of one
 // beam (the power-series elements converge with a handful).
 constexpr int kMaxElements = 100000;
 constexpr int kMaxSeriesOrder = 6;
+// Guards against a typo in duration or time_step: a run this long would take hours and keep a
+// timing sample (8 bytes) per step.
+constexpr double kMaxSteps = 1e8;
 
 SceneStructure ReadStructure(const TomlFieldReader& r) {
   r.RequireTable("structure");
@@ -78,14 +88,51 @@ Eigen::Vector3d ReadVector3(const TomlFieldReader& r, const std::string& key) {
   return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
 }
 
+// A parameter that only one choice takes: given beside another choice it is refused rather than
+// ignored, since it shows an intent that the run would not follow.
+std::optional<double> ReadParameterOf(const TomlFieldReader& r, const std::string& key, bool chosen,
+                                      const std::string& owner) {
+  const std::optional<double> value = r.OptionalNumber(key);
+  r.Require(!value || chosen, key, "only " + owner + " takes it");
+  return value;
+}
+
+// The time function's parameters are checked whatever the analysis: they describe the loads,
+// and a scene may switch to a transient analysis with --set.
+std::optional<SceneTimeFunction> ReadTimeFunction(const TomlFieldReader& r) {
+  const std::optional<TimeFunctionKind> kind =
+      r.OptionalChoice("loads.time_function", kTimeFunctions, "time function");
+  const TimeFunctionKind chosen = kind.value_or(TimeFunctionKind::kStep);
+  SceneTimeFunction f;
+  f.kind = chosen;
+  const std::optional<double> ramp_time = ReadParameterOf(
+      r, "loads.ramp_time", chosen == TimeFunctionKind::kRamp, "the \"ramp\" time function");
+  const std::optional<double> frequency = ReadParameterOf(
+      r, "loads.frequency", chosen == TimeFunctionKind::kSine, "the \"sine\" time function");
+  if (chosen == TimeFunctionKind::kRamp) {
+    r.Require(ramp_time.has_value(), "loads.time_function", "needs loads.ramp_time (s, > 0)");
+    r.Require(*ramp_time > 0.0, "loads.ramp_time", "must be positive");
+    f.ramp_time = *ramp_time;
+  }
+  if (chosen == TimeFunctionKind::kSine) {
+    r.Require(frequency.has_value(), "loads.time_function", "needs loads.frequency (Hz, > 0)");
+    r.Require(*frequency > 0.0, "loads.frequency", "must be positive");
+    f.frequency = *frequency;
+  }
+  if (!kind) return std::nullopt;
+  return f;
+}
+
 SceneLoads ReadLoads(const TomlFieldReader& r) {
   SceneLoads l;
   if (!r.HasTable("loads")) return l;
-  r.RejectUnknownKeys("loads", {"tip_force", "midspan_force", "distributed", "tip_moment"});
+  r.RejectUnknownKeys("loads", {"tip_force", "midspan_force", "distributed", "tip_moment",
+                                "time_function", "ramp_time", "frequency"});
   l.tip_force = ReadVector3(r, "loads.tip_force");
   l.midspan_force = ReadVector3(r, "loads.midspan_force");
   l.distributed = ReadVector3(r, "loads.distributed");
   l.tip_moment = ReadVector3(r, "loads.tip_moment");
+  l.time_function = ReadTimeFunction(r);
   return l;
 }
 
@@ -164,6 +211,9 @@ std::optional<DampingEffect> ReadDamping(const TomlFieldReader& r) {
               "give quality_factor or rayleigh, not both");
     d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
   }
+  // An enabled table that names no model would run undamped while the scene says otherwise.
+  r.Require(!d.enabled || d.quality_factor || d.rayleigh, "effects.damping",
+            "needs quality_factor or rayleigh = [alpha, beta]");
   return d;
 }
 
@@ -182,6 +232,43 @@ SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structu
   return e;
 }
 
+// An integrator parameter: the integrator that takes it, its range and where it goes.
+struct IntegratorParameter {
+  const char* key;
+  Integrator owner;
+  double lower;
+  double upper;
+  const char* range;
+  double SceneAnalysis::*field;
+};
+
+void ReadTransient(const TomlFieldReader& r, SceneAnalysis& a) {
+  a.duration = r.RequiredPositive("analysis.duration");
+  a.time_step = r.RequiredPositive("analysis.time_step");
+  r.Require(a.time_step <= a.duration, "analysis.time_step",
+            "must not exceed analysis.duration = " + FormatNumber(a.duration));
+  r.Require(std::round(a.duration / a.time_step) <= kMaxSteps, "analysis.time_step",
+            "more than 1e8 steps over analysis.duration = " + FormatNumber(a.duration));
+  a.integrator =
+      r.OptionalChoice("analysis.integrator", kIntegrators, "integrator").value_or(a.integrator);
+  const std::array<IntegratorParameter, 4> parameters = {
+      {{"beta", Integrator::kNewmark, 0.0, 0.5, "[0, 0.5]", &SceneAnalysis::beta},
+       {"gamma", Integrator::kNewmark, 0.5, 1.0, "[0.5, 1]", &SceneAnalysis::gamma},
+       {"alpha", Integrator::kHht, 0.0, 1.0 / 3.0, "[0, 1/3]", &SceneAnalysis::alpha},
+       {"rho_inf", Integrator::kGeneralizedAlpha, 0.0, 1.0, "[0, 1]", &SceneAnalysis::rho_inf}}};
+  for (const IntegratorParameter& p : parameters) {
+    const std::string key = std::string("analysis.") + p.key;
+    const std::optional<double> value =
+        ReadParameterOf(r, key, a.integrator == p.owner,
+                        "the \"" + std::string(ToString(p.owner)) + "\" integrator");
+    if (!value) continue;
+    r.Require(*value >= p.lower && *value <= p.upper, key, std::string("must lie in ") + p.range);
+    a.*p.field = *value;
+  }
+  a.initial =
+      r.OptionalChoice("analysis.initial", kInitialStates, "initial state").value_or(a.initial);
+}
+
 SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   r.RequireTable("analysis");
   // The parameters of every documented analysis are known keys, so that a scene can carry
@@ -196,6 +283,7 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
     a.count = r.Integer("analysis.count", a.count);
     r.Require(a.count >= 1, "analysis.count", "must be at least 1");
   }
+  if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
   return a;
 }
 
@@ -228,26 +316,41 @@ void CheckLoads(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
+// What a transient analysis needs of the rest of the scene.
+void CheckTransient(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.analysis.type != AnalysisType::kTransient) return;
+  if (scene.analysis.integrator == Integrator::kModal) {
+    r.Require(scene.model.modes >= 1, "model.modes",
+              "analysis.integrator = \"modal\" needs at least one mode");
+  } else {
+    r.Require(scene.model.modes == 0, "model.modes",
+              "modal reduction needs analysis.integrator = \"modal\" (0: the full model)");
+  }
+  const std::optional<SceneTimeFunction>& f = scene.loads.time_function;
+  r.Require(
+      scene.analysis.initial != InitialState::kStatic || !f || f->kind == TimeFunctionKind::kStep,
+      "loads.time_function",
+      "analysis.initial = \"static\" removes the loads at t = 0, so only \"step\" goes with it");
+}
+
 // What the schema describes but this version cannot simulate is refused, never ignored. Each
 // later feature removes its line here.
 void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
   const std::string unavailable = "not available in this version";
   r.Require(scene.model.theory == Theory::kLinear, "model.theory",
             unavailable + " (only \"linear\" is)");
-  r.Require(scene.model.modes == 0, "model.modes",
-            "modal reduction is " + unavailable + " (0: the full model)");
   r.Require(scene.structure.axial_load == 0.0, "structure.axial_load", unavailable);
-  r.Require(
-      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
-      "analysis.type", unavailable + " (available: \"static\", \"modal\")");
+  const AnalysisType type = scene.analysis.type;
+  r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
+                type == AnalysisType::kTransient,
+            "analysis.type", unavailable + " (available: \"static\", \"modal\", \"transient\")");
   const SceneEffects& e = scene.effects;
-  const std::array<std::pair<const char*, bool>, 6> effects = {
+  const std::array<std::pair<const char*, bool>, 5> effects = {
       {{"contact", e.contact && e.contact->enabled},
        {"stiction", e.stiction && e.stiction->enabled},
        {"electrostatic", e.electrostatic && e.electrostatic->enabled},
        {"casimir", e.casimir && e.casimir->enabled},
-       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled},
-       {"damping", e.damping && e.damping->enabled}}};
+       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled}}};
   for (const auto& [name, enabled] : effects) {
     r.Require(!enabled, std::string("effects.") + name,
               "the effect is " + unavailable + " (remove the table or set enabled = false)");
@@ -271,6 +374,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   scene.analysis = ReadAnalysis(r);
   scene.device = ReadDevice(r);
   CheckLoads(r, scene);
+  CheckTransient(r, scene);
   RefuseUnavailable(r, scene);
   return scene;
 }

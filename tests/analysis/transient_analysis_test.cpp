@@ -115,6 +115,30 @@ TEST(TransientAnalysisTest, StepLoadOvershootsToTwiceTheStaticDeflection) {
   EXPECT_GE(full.step_time.p99_us, full.step_time.median_us);
 }
 
+// Central difference just above its stability limit 2 / w_max (w_max from a dense eigen solve
+// here) grows geometrically but stays finite for many steps: the run must end as diverged,
+// not report ok with a deflection of 1e200 m; just below the limit it runs to the end.
+TEST(TransientAnalysisTest, ExplicitStepAboveItsLimitIsReportedAsDiverged) {
+  const BeamModel<2> model = Reference();
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(model.Stiffness().ToDense(),
+                                                                model.Mass(0).ToDense());
+  const double critical = 2.0 / std::sqrt(eig.eigenvalues().maxCoeff()) * model.units().time;
+  TransientOptions o;
+  o.parameters = GeneralizedAlphaParameters::CentralDifference();
+  o.output_x = kL;
+  o.time_step = 1.01 * critical;
+  o.duration = 20000 * o.time_step;
+  const TransientResult unstable = RunTransient(model, TipForce(), o);
+  EXPECT_EQ(unstable.status, Status::kDiverged);
+  EXPECT_LT(unstable.steps, 20000);
+  o.time_step = 0.99 * critical;
+  o.duration = 20000 * o.time_step;
+  const TransientResult stable = RunTransient(model, TipForce(), o);
+  EXPECT_EQ(stable.status, Status::kOk);
+  EXPECT_EQ(stable.steps, 20000);
+  EXPECT_LT(stable.max_abs_output, 3 * std::abs(StaticTip()));
+}
+
 TEST(TransientAnalysisTest, RejectsInconsistentOptionsNamingTheKey) {
   const BeamModel<2> model = Reference();
   TransientOptions o = Release(TimePath::kModal, 0, 1, 10);

@@ -69,6 +69,20 @@ TEST(CosmemsBinaryTest, NumericalFailurePrintsTheJsonAndExitsThree) {
   EXPECT_EQ(nlohmann::json::parse(process.out).at("status"), "non-finite result");
 }
 
+TEST(CosmemsBinaryTest, TransientRunExitsZeroAndUnstableOneExitsThree) {
+  const Process release = RunBinary("run cantilever-release --json");
+  EXPECT_EQ(release.code, 0);
+  EXPECT_EQ(release.err, "");
+  EXPECT_EQ(nlohmann::json::parse(release.out).at("steps"), 1000);
+  // Central difference far above its stability limit overflows (see TransientCliTest).
+  const Process unstable = RunBinary(
+      "run cantilever-release --json --set analysis.integrator=central-difference "
+      "--set model.modes=0");
+  EXPECT_EQ(unstable.code, 3);
+  EXPECT_EQ(unstable.err, "");
+  EXPECT_EQ(nlohmann::json::parse(unstable.out).at("status"), "diverged (unstable time step?)");
+}
+
 TEST(CosmemsBinaryTest, UsageErrorIsOneLineOnStderrAndExitTwo) {
   const Process process = RunBinary("run");
   EXPECT_EQ(process.code, 2);

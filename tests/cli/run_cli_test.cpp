@@ -16,8 +16,13 @@
 namespace cosmems {
 namespace {
 
+using testing::Cli;
+using testing::CliOutcome;
+using testing::ExpectContains;
+using testing::InvalidInput;
 using testing::LineCount;
 using testing::ReadLines;
+using testing::RunJson;
 using testing::TempDirectory;
 
 // The static solve reproduces Euler-Bernoulli statics at the nodes to round-off; the margin
@@ -26,44 +31,6 @@ constexpr double kStaticTolerance = 1e-9;
 // Modal: 20 power-series elements converge f1 far below this; the bound only catches a wrong
 // wiring (units, mode order), the core's own tests hold the accuracy.
 constexpr double kModalTolerance = 1e-6;
-
-struct CliOutcome {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-CliOutcome Cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  CliOutcome outcome;
-  outcome.code = RunCli(args, out, err);
-  outcome.out = out.str();
-  outcome.err = err.str();
-  return outcome;
-}
-
-nlohmann::json RunJson(std::vector<std::string> args, int expected_code = 0) {
-  args.insert(args.begin(), "run");
-  args.push_back("--json");
-  const CliOutcome outcome = Cli(args);
-  EXPECT_EQ(outcome.code, expected_code) << outcome.err;
-  EXPECT_EQ(outcome.err, "");
-  return nlohmann::json::parse(outcome.out);  // throws unless stdout is exactly one JSON value
-}
-
-// Invalid input: exit status 2, nothing on stdout and exactly one line on stderr.
-std::string InvalidInput(const std::vector<std::string>& args) {
-  const CliOutcome outcome = Cli(args);
-  EXPECT_EQ(outcome.code, 2);
-  EXPECT_EQ(outcome.out, "");
-  EXPECT_EQ(LineCount(outcome.err), 1) << outcome.err;
-  EXPECT_EQ(outcome.err.rfind("cosmems: ", 0), 0u) << outcome.err;
-  return outcome.err;
-}
-
-void ExpectContains(const std::string& text, const std::string& part) {
-  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in:\n" << text;
-}
 
 double SecondMoment(const Scene& scene) {
   return scene.structure.width * std::pow(scene.structure.thickness, 3) / 12.0;
@@ -315,7 +282,7 @@ TEST(RunCliTest, ScenesListsEachEmbeddedSceneOnOneLine) {
 }
 
 TEST(RunCliTest, ShowPrintsAFileThatLoadsToTheSameScene) {
-  for (const char* name : {"cantilever", "microbridge", "cantilever-modal"}) {
+  for (const char* name : {"cantilever", "microbridge", "cantilever-modal", "cantilever-release"}) {
     SCOPED_TRACE(name);
     const CliOutcome outcome = Cli({"show", name});
     EXPECT_EQ(outcome.code, 0);

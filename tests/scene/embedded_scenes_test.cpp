@@ -22,6 +22,7 @@ TEST(EmbeddedScenesTest, ListsTheShippedScenesInNameOrder) {
   for (std::size_t i = 1; i < scenes.size(); ++i) EXPECT_LT(scenes[i - 1].name, scenes[i].name);
   EXPECT_NE(FindEmbeddedScene("cantilever"), nullptr);
   EXPECT_NE(FindEmbeddedScene("microbridge"), nullptr);
+  EXPECT_NE(FindEmbeddedScene("cantilever-release"), nullptr);
   EXPECT_EQ(FindEmbeddedScene("no-such-scene"), nullptr);
 }
 
@@ -98,6 +99,32 @@ TEST(EmbeddedScenesTest, CantileverModalIsTheCantileverAskingForFourModes) {
   Scene expected = LoadScene("cantilever", {SceneOverride::Parse("analysis.type=modal")});
   expected.loads = SceneLoads{};
   testing::ExpectSameScene(modal, expected);
+}
+
+TEST(EmbeddedScenesTest, CantileverReleaseLetsThePlanarCantileverGoFromItsStaticDeflection) {
+  const Scene release = LoadScene("cantilever-release");
+  EXPECT_EQ(release.analysis.type, AnalysisType::kTransient);
+  EXPECT_EQ(release.analysis.duration, 1e-3);
+  EXPECT_EQ(release.analysis.time_step, 1e-6);
+  EXPECT_EQ(release.analysis.integrator, Integrator::kModal);
+  EXPECT_EQ(release.analysis.initial, InitialState::kStatic);
+  EXPECT_EQ(release.model.modes, 4);
+  EXPECT_EQ(release.model.dimension, 2);
+  EXPECT_FALSE(release.loads.time_function.has_value());
+  ASSERT_TRUE(release.effects.damping.has_value());
+  EXPECT_TRUE(release.effects.damping->enabled);
+  EXPECT_EQ(release.effects.damping->quality_factor, 100.0);
+  // Otherwise the reference cantilever, tip force and all.
+  Scene expected =
+      LoadScene("cantilever",
+                {SceneOverride::Parse("model.dimension=2"), SceneOverride::Parse("model.modes=4"),
+                 SceneOverride::Parse("effects.damping.quality_factor=100.0"),
+                 SceneOverride::Parse("analysis.type=transient"),
+                 SceneOverride::Parse("analysis.duration=1e-3"),
+                 SceneOverride::Parse("analysis.time_step=1e-6"),
+                 SceneOverride::Parse("analysis.integrator=modal"),
+                 SceneOverride::Parse("analysis.initial=static")});
+  testing::ExpectSameScene(release, expected);
 }
 
 }  // namespace

@@ -74,5 +74,98 @@ TEST(SceneConversionTest, LeavesOutZeroLoads) {
   EXPECT_TRUE(loads.points.empty());
 }
 
+// cantilever-release as a run of the full model, by Newmark's rule unless `assignments` say
+// otherwise.
+Scene FullOrderRelease(const std::vector<std::string>& assignments) {
+  std::vector<std::string> all = {"model.modes=0", "analysis.integrator=newmark"};
+  all.insert(all.end(), assignments.begin(), assignments.end());
+  return Load("cantilever-release", all);
+}
+
+void ExpectParameters(const GeneralizedAlphaParameters& actual,
+                      const GeneralizedAlphaParameters& expected) {
+  EXPECT_EQ(actual.alpha_m, expected.alpha_m);
+  EXPECT_EQ(actual.alpha_f, expected.alpha_f);
+  EXPECT_EQ(actual.beta, expected.beta);
+  EXPECT_EQ(actual.gamma, expected.gamma);
+}
+
+TEST(SceneConversionTest, ModalReleaseRecordsTheTip) {
+  const TransientOptions o = MakeTransientOptions(Load("cantilever-release"));
+  EXPECT_EQ(o.duration, 1e-3);
+  EXPECT_EQ(o.time_step, 1e-6);
+  EXPECT_EQ(o.path, TimePath::kModal);
+  EXPECT_EQ(o.modes, 4);
+  EXPECT_TRUE(o.start_static);
+  EXPECT_EQ(o.time_function.kind, LoadTimeFunction::Kind::kStep);
+  EXPECT_EQ(o.damping.kind, DampingModel::Kind::kQualityFactor);
+  EXPECT_EQ(o.damping.quality_factor, 100.0);
+  EXPECT_EQ(o.output_x, 200e-6);
+}
+
+TEST(SceneConversionTest, EachIntegratorGetsItsGeneralizedAlphaParameters) {
+  const TransientOptions newmark = MakeTransientOptions(
+      FullOrderRelease({"analysis.integrator=newmark", "analysis.beta=0.3", "analysis.gamma=0.6"}));
+  EXPECT_EQ(newmark.path, TimePath::kNewmarkFamily);
+  ExpectParameters(newmark.parameters, GeneralizedAlphaParameters::Newmark(0.3, 0.6));
+  ExpectParameters(
+      MakeTransientOptions(FullOrderRelease({"analysis.integrator=newmark"})).parameters,
+      GeneralizedAlphaParameters::Newmark(0.25, 0.5));
+  ExpectParameters(
+      MakeTransientOptions(FullOrderRelease({"analysis.integrator=hht", "analysis.alpha=0.1"}))
+          .parameters,
+      GeneralizedAlphaParameters::Hht(0.1));
+  ExpectParameters(MakeTransientOptions(FullOrderRelease({"analysis.integrator=hht"})).parameters,
+                   GeneralizedAlphaParameters::Hht(0.05));
+  ExpectParameters(MakeTransientOptions(FullOrderRelease({"analysis.integrator=generalized-alpha",
+                                                          "analysis.rho_inf=0.5"}))
+                       .parameters,
+                   GeneralizedAlphaParameters::FromSpectralRadius(0.5));
+  ExpectParameters(
+      MakeTransientOptions(FullOrderRelease({"analysis.integrator=generalized-alpha"})).parameters,
+      GeneralizedAlphaParameters::FromSpectralRadius(0.8));
+  const TransientOptions explicit_rule =
+      MakeTransientOptions(FullOrderRelease({"analysis.integrator=central-difference"}));
+  ExpectParameters(explicit_rule.parameters, GeneralizedAlphaParameters::CentralDifference());
+  EXPECT_TRUE(explicit_rule.parameters.IsExplicit());
+}
+
+TEST(SceneConversionTest, BridgeTransientRecordsTheMidspan) {
+  const TransientOptions o =
+      MakeTransientOptions(Load("microbridge", {"analysis.type=transient", "analysis.duration=1e-5",
+                                                "analysis.time_step=1e-8"}));
+  EXPECT_EQ(o.output_x, 50e-6);
+  EXPECT_FALSE(o.start_static);
+  EXPECT_EQ(o.path, TimePath::kNewmarkFamily);
+  EXPECT_EQ(o.damping.kind, DampingModel::Kind::kNone);
+}
+
+TEST(SceneConversionTest, TimeFunctionsCarryTheirParameters) {
+  const std::vector<std::string> from_rest = {"analysis.initial=rest"};
+  EXPECT_EQ(MakeLoadTimeFunction(FullOrderRelease(from_rest)).kind, LoadTimeFunction::Kind::kStep);
+  std::vector<std::string> ramp = from_rest;
+  ramp.insert(ramp.end(), {"loads.time_function=ramp", "loads.ramp_time=2e-5"});
+  const LoadTimeFunction r = MakeLoadTimeFunction(FullOrderRelease(ramp));
+  EXPECT_EQ(r.kind, LoadTimeFunction::Kind::kRamp);
+  EXPECT_EQ(r.ramp_time, 2e-5);
+  EXPECT_EQ(r.Value(1e-5), 0.5);
+  std::vector<std::string> sine = from_rest;
+  sine.insert(sine.end(), {"loads.time_function=sine", "loads.frequency=5e4"});
+  const LoadTimeFunction s = MakeLoadTimeFunction(FullOrderRelease(sine));
+  EXPECT_EQ(s.kind, LoadTimeFunction::Kind::kSine);
+  EXPECT_EQ(s.frequency, 5e4);
+}
+
+TEST(SceneConversionTest, DampingOnlyWhenEnabled) {
+  const DampingModel rayleigh =
+      MakeDampingModel(Load("cantilever-release", {"effects.damping={ rayleigh = [10.0, 1e-9] }"}));
+  EXPECT_EQ(rayleigh.kind, DampingModel::Kind::kRayleigh);
+  EXPECT_EQ(rayleigh.rayleigh.mass, 10.0);
+  EXPECT_EQ(rayleigh.rayleigh.stiffness, 1e-9);
+  EXPECT_EQ(MakeDampingModel(Load("cantilever-release", {"effects.damping.enabled=false"})).kind,
+            DampingModel::Kind::kNone);
+  EXPECT_EQ(MakeDampingModel(Load("cantilever")).kind, DampingModel::Kind::kNone);
+}
+
 }  // namespace
 }  // namespace cosmems

@@ -30,14 +30,33 @@ inline void ExpectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.loads.midspan_force, b.loads.midspan_force);
   EXPECT_EQ(a.loads.distributed, b.loads.distributed);
   EXPECT_EQ(a.loads.tip_moment, b.loads.tip_moment);
+  ASSERT_EQ(a.loads.time_function.has_value(), b.loads.time_function.has_value());
+  if (a.loads.time_function) {
+    EXPECT_EQ(a.loads.time_function->kind, b.loads.time_function->kind);
+    EXPECT_EQ(a.loads.time_function->ramp_time, b.loads.time_function->ramp_time);
+    EXPECT_EQ(a.loads.time_function->frequency, b.loads.time_function->frequency);
+  }
   EXPECT_EQ(a.effects.contact.has_value(), b.effects.contact.has_value());
   EXPECT_EQ(a.effects.stiction.has_value(), b.effects.stiction.has_value());
   EXPECT_EQ(a.effects.electrostatic.has_value(), b.effects.electrostatic.has_value());
   EXPECT_EQ(a.effects.casimir.has_value(), b.effects.casimir.has_value());
   EXPECT_EQ(a.effects.van_der_waals.has_value(), b.effects.van_der_waals.has_value());
-  EXPECT_EQ(a.effects.damping.has_value(), b.effects.damping.has_value());
+  ASSERT_EQ(a.effects.damping.has_value(), b.effects.damping.has_value());
+  if (a.effects.damping) {
+    EXPECT_EQ(a.effects.damping->enabled, b.effects.damping->enabled);
+    EXPECT_EQ(a.effects.damping->quality_factor, b.effects.damping->quality_factor);
+    EXPECT_EQ(a.effects.damping->rayleigh, b.effects.damping->rayleigh);
+  }
   EXPECT_EQ(a.analysis.type, b.analysis.type);
   EXPECT_EQ(a.analysis.count, b.analysis.count);
+  EXPECT_EQ(a.analysis.duration, b.analysis.duration);
+  EXPECT_EQ(a.analysis.time_step, b.analysis.time_step);
+  EXPECT_EQ(a.analysis.integrator, b.analysis.integrator);
+  EXPECT_EQ(a.analysis.beta, b.analysis.beta);
+  EXPECT_EQ(a.analysis.gamma, b.analysis.gamma);
+  EXPECT_EQ(a.analysis.alpha, b.analysis.alpha);
+  EXPECT_EQ(a.analysis.rho_inf, b.analysis.rho_inf);
+  EXPECT_EQ(a.analysis.initial, b.analysis.initial);
   EXPECT_EQ(a.device.has_value(), b.device.has_value());
 }
 

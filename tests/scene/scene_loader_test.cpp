@@ -65,6 +65,7 @@ TEST(SceneLoaderTest, MinimalSceneTakesEveryDocumentedDefault) {
   EXPECT_EQ(scene.loads.midspan_force, Eigen::Vector3d::Zero());
   EXPECT_EQ(scene.loads.distributed, Eigen::Vector3d::Zero());
   EXPECT_EQ(scene.loads.tip_moment, Eigen::Vector3d::Zero());
+  EXPECT_FALSE(scene.loads.time_function.has_value());
   EXPECT_FALSE(scene.effects.contact || scene.effects.stiction || scene.effects.electrostatic ||
                scene.effects.casimir || scene.effects.van_der_waals || scene.effects.damping);
   EXPECT_FALSE(scene.device.has_value());

@@ -286,37 +286,32 @@ INSTANTIATE_TEST_SUITE_P(
 
 INSTANTIATE_TEST_SUITE_P(
     NotYetAvailable, SceneValidationTest,
-    ::testing::Values(
-        BadScene{"stretching", With("model.theory", "\"stretching\""),
-                 "model.theory = \"stretching\"", kUnavailable},
-        BadScene{"cosserat", With("model.theory", "\"cosserat\""), "model.theory = \"cosserat\"",
-                 kUnavailable},
-        BadScene{"modal_reduction", With("model.modes", "4"), "model.modes = 4", kUnavailable},
-        BadScene{"axial_load", With("structure.axial_load", "1e-6"), "structure.axial_load = 1e-06",
-                 kUnavailable},
-        BadScene{"buckling", With("analysis.type", "\"buckling\""), "analysis.type = \"buckling\"",
-                 kUnavailable},
-        BadScene{"pullin", With("analysis.type", "\"pullin\""), "analysis.type = \"pullin\"",
-                 kUnavailable},
-        BadScene{"transient", With("analysis.type", "\"transient\""),
-                 "analysis.type = \"transient\"", kUnavailable},
-        BadScene{"release", With("analysis.type", "\"release\""), "analysis.type = \"release\"",
-                 kUnavailable},
-        BadScene{"haptic", With("analysis.type", "\"haptic\""), "analysis.type = \"haptic\"",
-                 kUnavailable},
-        BadScene{"contact", With("effects.contact", "{}"), "effects.contact = {}", kUnavailable},
-        BadScene{"stiction", With("effects.stiction", "{ adhesion_energy = 0.02 }"),
-                 "effects.stiction = { adhesion_energy = 0.02 }", kUnavailable},
-        BadScene{"electrostatic", With("effects.electrostatic.voltage", "10.0"),
-                 "effects.electrostatic = { voltage = 10.0 }", kUnavailable},
-        BadScene{"casimir", With("effects.casimir.enabled", "true"),
-                 "effects.casimir = { enabled = true }", kUnavailable},
-        BadScene{"van_der_waals", With("effects.van_der_waals.hamaker", "1e-19"),
-                 "effects.van_der_waals = { hamaker = 1e-19 }", kUnavailable},
-        BadScene{"damping", With("effects.damping.quality_factor", "100.0"),
-                 "effects.damping = { quality_factor = 100.0 }", kUnavailable},
-        BadScene{"device", With("device.backend", "\"scripted\""),
-                 "device = { backend = \"scripted\" }", kUnavailable}),
+    ::testing::Values(BadScene{"stretching", With("model.theory", "\"stretching\""),
+                               "model.theory = \"stretching\"", kUnavailable},
+                      BadScene{"cosserat", With("model.theory", "\"cosserat\""),
+                               "model.theory = \"cosserat\"", kUnavailable},
+                      BadScene{"axial_load", With("structure.axial_load", "1e-6"),
+                               "structure.axial_load = 1e-06", kUnavailable},
+                      BadScene{"buckling", With("analysis.type", "\"buckling\""),
+                               "analysis.type = \"buckling\"", kUnavailable},
+                      BadScene{"pullin", With("analysis.type", "\"pullin\""),
+                               "analysis.type = \"pullin\"", kUnavailable},
+                      BadScene{"release", With("analysis.type", "\"release\""),
+                               "analysis.type = \"release\"", kUnavailable},
+                      BadScene{"haptic", With("analysis.type", "\"haptic\""),
+                               "analysis.type = \"haptic\"", kUnavailable},
+                      BadScene{"contact", With("effects.contact", "{}"), "effects.contact = {}",
+                               kUnavailable},
+                      BadScene{"stiction", With("effects.stiction", "{ adhesion_energy = 0.02 }"),
+                               "effects.stiction = { adhesion_energy = 0.02 }", kUnavailable},
+                      BadScene{"electrostatic", With("effects.electrostatic.voltage", "10.0"),
+                               "effects.electrostatic = { voltage = 10.0 }", kUnavailable},
+                      BadScene{"casimir", With("effects.casimir.enabled", "true"),
+                               "effects.casimir = { enabled = true }", kUnavailable},
+                      BadScene{"van_der_waals", With("effects.van_der_waals.hamaker", "1e-19"),
+                               "effects.van_der_waals = { hamaker = 1e-19 }", kUnavailable},
+                      BadScene{"device", With("device.backend", "\"scripted\""),
+                               "device = { backend = \"scripted\" }", kUnavailable}),
     CaseName);
 
 INSTANTIATE_TEST_SUITE_P(
@@ -346,6 +341,153 @@ INSTANTIATE_TEST_SUITE_P(
                  "loads.tip_moment = [0, 0, 1e-09]", "a bridge has no free end"}),
     CaseName);
 
+// The cantilever as a valid transient analysis: 1000 steps of the default Newmark rule.
+SceneText Transient() {
+  return SceneText()
+      .Set("analysis.type", "\"transient\"")
+      .Set("analysis.duration", "1e-3")
+      .Set("analysis.time_step", "1e-6");
+}
+
+SceneText TransientWith(const std::string& key, const std::string& value) {
+  return Transient().Set(key, value);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Transient, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"no_duration", Transient().Remove("analysis.duration"), "analysis.duration",
+                 "missing required key"},
+        BadScene{"no_time_step", Transient().Remove("analysis.time_step"), "analysis.time_step",
+                 "missing required key"},
+        BadScene{"zero_duration", TransientWith("analysis.duration", "0.0"),
+                 "analysis.duration = 0.0", "must be positive"},
+        BadScene{"zero_time_step", TransientWith("analysis.time_step", "0"),
+                 "analysis.time_step = 0", "must be positive"},
+        BadScene{"negative_time_step", TransientWith("analysis.time_step", "-1e-6"),
+                 "analysis.time_step = -1e-06", "must be positive"},
+        BadScene{"time_step_beyond_duration", TransientWith("analysis.time_step", "2e-3"),
+                 "analysis.time_step = 0.002", "must not exceed analysis.duration = 0.001"},
+        BadScene{"too_many_steps",
+                 TransientWith("analysis.duration", "1.0").Set("analysis.time_step", "1e-9"),
+                 "analysis.time_step = 1e-09", "more than 1e8 steps over analysis.duration = 1"},
+        BadScene{"duration_string", TransientWith("analysis.duration", "\"1 ms\""),
+                 "analysis.duration = \"1 ms\"", "expected a number"},
+        BadScene{"unknown_integrator", TransientWith("analysis.integrator", "\"rk4\""),
+                 "analysis.integrator = \"rk4\"",
+                 "unknown integrator (expected \"newmark\", \"hht\", \"generalized-alpha\", "
+                 "\"central-difference\" or \"modal\")"},
+        BadScene{"integrator_number", TransientWith("analysis.integrator", "1"),
+                 "analysis.integrator = 1", "expected a string"},
+        BadScene{"alpha_for_newmark", TransientWith("analysis.alpha", "0.1"),
+                 "analysis.alpha = 0.1", "only the \"hht\" integrator takes it"},
+        BadScene{"beta_for_hht",
+                 TransientWith("analysis.integrator", "\"hht\"").Set("analysis.beta", "0.3"),
+                 "analysis.beta = 0.3", "only the \"newmark\" integrator takes it"},
+        BadScene{"gamma_for_central_difference",
+                 TransientWith("analysis.integrator", "\"central-difference\"")
+                     .Set("analysis.gamma", "0.5"),
+                 "analysis.gamma = 0.5", "only the \"newmark\" integrator takes it"},
+        BadScene{"rho_inf_for_hht",
+                 TransientWith("analysis.integrator", "\"hht\"").Set("analysis.rho_inf", "0.5"),
+                 "analysis.rho_inf = 0.5", "only the \"generalized-alpha\" integrator takes it"},
+        BadScene{"alpha_for_modal",
+                 TransientWith("analysis.integrator", "\"modal\"")
+                     .Set("model.modes", "4")
+                     .Set("analysis.alpha", "0.1"),
+                 "analysis.alpha = 0.1", "only the \"hht\" integrator takes it"},
+        BadScene{"beta_above_half", TransientWith("analysis.beta", "0.6"), "analysis.beta = 0.6",
+                 "must lie in [0, 0.5]"},
+        BadScene{"negative_beta", TransientWith("analysis.beta", "-0.1"), "analysis.beta = -0.1",
+                 "must lie in [0, 0.5]"},
+        BadScene{"gamma_below_half", TransientWith("analysis.gamma", "0.4"), "analysis.gamma = 0.4",
+                 "must lie in [0.5, 1]"},
+        BadScene{"alpha_above_third",
+                 TransientWith("analysis.integrator", "\"hht\"").Set("analysis.alpha", "0.34"),
+                 "analysis.alpha = 0.34", "must lie in [0, 1/3]"},
+        BadScene{"negative_alpha",
+                 TransientWith("analysis.integrator", "\"hht\"").Set("analysis.alpha", "-0.05"),
+                 "analysis.alpha = -0.05", "must lie in [0, 1/3]"},
+        BadScene{"rho_inf_above_one",
+                 TransientWith("analysis.integrator", "\"generalized-alpha\"")
+                     .Set("analysis.rho_inf", "1.5"),
+                 "analysis.rho_inf = 1.5", "must lie in [0, 1]"},
+        BadScene{"rho_inf_negative",
+                 TransientWith("analysis.integrator", "\"generalized-alpha\"")
+                     .Set("analysis.rho_inf", "-0.5"),
+                 "analysis.rho_inf = -0.5", "must lie in [0, 1]"},
+        BadScene{"unknown_initial", TransientWith("analysis.initial", "\"deflected\""),
+                 "analysis.initial = \"deflected\"",
+                 "unknown initial state (expected \"rest\" or \"static\")"},
+        BadScene{"modal_without_modes", TransientWith("analysis.integrator", "\"modal\""),
+                 "model.modes", "analysis.integrator = \"modal\" needs at least one mode"},
+        BadScene{"modal_with_zero_modes",
+                 TransientWith("analysis.integrator", "\"modal\"").Set("model.modes", "0"),
+                 "model.modes = 0", "analysis.integrator = \"modal\" needs at least one mode"},
+        BadScene{"modes_without_modal", TransientWith("model.modes", "4"), "model.modes = 4",
+                 "modal reduction needs analysis.integrator = \"modal\""},
+        BadScene{"static_start_with_ramp",
+                 TransientWith("analysis.initial", "\"static\"")
+                     .Set("loads.time_function", "\"ramp\"")
+                     .Set("loads.ramp_time", "1e-5"),
+                 "loads.time_function = \"ramp\"",
+                 "analysis.initial = \"static\" removes the loads at t = 0"},
+        BadScene{"static_start_with_sine",
+                 TransientWith("analysis.initial", "\"static\"")
+                     .Set("loads.time_function", "\"sine\"")
+                     .Set("loads.frequency", "1e4"),
+                 "loads.time_function = \"sine\"", "only \"step\" goes with it"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    TimeFunctions, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"unknown", TransientWith("loads.time_function", "\"square\""),
+                 "loads.time_function = \"square\"",
+                 "unknown time function (expected \"step\", \"ramp\" or \"sine\")"},
+        BadScene{"ramp_without_ramp_time", TransientWith("loads.time_function", "\"ramp\""),
+                 "loads.time_function = \"ramp\"", "needs loads.ramp_time (s, > 0)"},
+        BadScene{"sine_without_frequency", TransientWith("loads.time_function", "\"sine\""),
+                 "loads.time_function = \"sine\"", "needs loads.frequency (Hz, > 0)"},
+        BadScene{"zero_ramp_time",
+                 TransientWith("loads.time_function", "\"ramp\"").Set("loads.ramp_time", "0.0"),
+                 "loads.ramp_time = 0.0", "must be positive"},
+        BadScene{"negative_frequency",
+                 TransientWith("loads.time_function", "\"sine\"").Set("loads.frequency", "-1e3"),
+                 "loads.frequency = -1000.0", "must be positive"},
+        BadScene{"ramp_time_for_a_step", TransientWith("loads.ramp_time", "1e-5"),
+                 "loads.ramp_time = 1e-05", "only the \"ramp\" time function takes it"},
+        BadScene{"frequency_for_a_ramp",
+                 TransientWith("loads.time_function", "\"ramp\"")
+                     .Set("loads.ramp_time", "1e-5")
+                     .Set("loads.frequency", "1e4"),
+                 "loads.frequency = 10000.0", "only the \"sine\" time function takes it"},
+        // The loads' time history is checked in every analysis: it describes the loads.
+        BadScene{"ramp_without_ramp_time_in_a_static_analysis",
+                 With("loads.time_function", "\"ramp\""), "loads.time_function = \"ramp\"",
+                 "needs loads.ramp_time"}),
+    CaseName);
+
+INSTANTIATE_TEST_SUITE_P(
+    Damping, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"empty", TransientWith("effects.damping", "{}"), "effects.damping = {}",
+                 "needs quality_factor or rayleigh = [alpha, beta]"},
+        BadScene{"only_enabled", TransientWith("effects.damping.enabled", "true"),
+                 "effects.damping = { enabled = true }", "needs quality_factor or rayleigh"},
+        BadScene{"both",
+                 TransientWith("effects.damping.quality_factor", "100.0")
+                     .Set("effects.damping.rayleigh", "[1.0, 0.0]"),
+                 "effects.damping.rayleigh = [1.0, 0.0]",
+                 "give quality_factor or rayleigh, not both"},
+        BadScene{"zero_quality_factor", TransientWith("effects.damping.quality_factor", "0.0"),
+                 "effects.damping.quality_factor = 0.0", "must be positive"},
+        BadScene{"negative_rayleigh", TransientWith("effects.damping.rayleigh", "[-1.0, 0.0]"),
+                 "effects.damping.rayleigh = [-1.0, 0.0]", "must be non-negative"},
+        BadScene{"short_rayleigh", TransientWith("effects.damping.rayleigh", "[1.0]"),
+                 "effects.damping.rayleigh = [1.0]", "expected an array of 2 numbers"}),
+    CaseName);
+
 TEST(SceneValidationAcceptanceTest, AcceptsWhatThePlanarModelRepresents) {
   const Scene scene = LoadSceneText(SceneText()
                                         .Set("model.dimension", "2")
@@ -365,6 +507,96 @@ TEST(SceneValidationAcceptanceTest, AcceptsDisabledEffectsAndZeroTipLoadsOnABrid
                                     "x.toml");
   EXPECT_EQ(scene.structure.kind, StructureKind::kBridge);
   EXPECT_FALSE(scene.effects.contact->enabled);
+}
+
+TEST(SceneValidationAcceptanceTest, TransientDefaults) {
+  const Scene scene = LoadSceneText(Transient().Render(), "x.toml");
+  const SceneAnalysis& a = scene.analysis;
+  EXPECT_EQ(a.type, AnalysisType::kTransient);
+  EXPECT_EQ(a.duration, 1e-3);
+  EXPECT_EQ(a.time_step, 1e-6);
+  EXPECT_EQ(a.integrator, Integrator::kNewmark);
+  EXPECT_EQ(a.beta, 0.25);
+  EXPECT_EQ(a.gamma, 0.5);
+  EXPECT_EQ(a.alpha, 0.05);
+  EXPECT_EQ(a.rho_inf, 0.8);
+  EXPECT_EQ(a.initial, InitialState::kRest);
+  EXPECT_FALSE(scene.loads.time_function.has_value());
+  EXPECT_FALSE(scene.effects.damping.has_value());
+  EXPECT_EQ(scene.model.modes, 0);
+}
+
+TEST(SceneValidationAcceptanceTest, ReadsEachIntegratorsOwnParameter) {
+  const Scene newmark = LoadSceneText(
+      Transient().Set("analysis.beta", "0.0").Set("analysis.gamma", "0.6").Render(), "x.toml");
+  EXPECT_EQ(newmark.analysis.beta, 0.0);
+  EXPECT_EQ(newmark.analysis.gamma, 0.6);
+  const Scene hht = LoadSceneText(
+      TransientWith("analysis.integrator", "\"hht\"").Set("analysis.alpha", "0.3").Render(),
+      "x.toml");
+  EXPECT_EQ(hht.analysis.integrator, Integrator::kHht);
+  EXPECT_EQ(hht.analysis.alpha, 0.3);
+  const Scene alpha = LoadSceneText(TransientWith("analysis.integrator", "\"generalized-alpha\"")
+                                        .Set("analysis.rho_inf", "0")
+                                        .Render(),
+                                    "x.toml");
+  EXPECT_EQ(alpha.analysis.integrator, Integrator::kGeneralizedAlpha);
+  EXPECT_EQ(alpha.analysis.rho_inf, 0.0);
+  const Scene explicit_rule = LoadSceneText(
+      TransientWith("analysis.integrator", "\"central-difference\"").Render(), "x.toml");
+  EXPECT_EQ(explicit_rule.analysis.integrator, Integrator::kCentralDifference);
+  const Scene modal = LoadSceneText(TransientWith("analysis.integrator", "\"modal\"")
+                                        .Set("model.modes", "4")
+                                        .Set("analysis.initial", "\"static\"")
+                                        .Render(),
+                                    "x.toml");
+  EXPECT_EQ(modal.analysis.integrator, Integrator::kModal);
+  EXPECT_EQ(modal.model.modes, 4);
+  EXPECT_EQ(modal.analysis.initial, InitialState::kStatic);
+}
+
+TEST(SceneValidationAcceptanceTest, ReadsTimeFunctionsAndTheirParameters) {
+  const Scene ramp = LoadSceneText(
+      TransientWith("loads.time_function", "\"ramp\"").Set("loads.ramp_time", "2e-5").Render(),
+      "x.toml");
+  ASSERT_TRUE(ramp.loads.time_function.has_value());
+  EXPECT_EQ(ramp.loads.time_function->kind, TimeFunctionKind::kRamp);
+  EXPECT_EQ(ramp.loads.time_function->ramp_time, 2e-5);
+  const Scene sine = LoadSceneText(
+      TransientWith("loads.time_function", "\"sine\"").Set("loads.frequency", "5e4").Render(),
+      "x.toml");
+  EXPECT_EQ(sine.loads.time_function->kind, TimeFunctionKind::kSine);
+  EXPECT_EQ(sine.loads.time_function->frequency, 5e4);
+  // A release from the static deflection goes with an explicit step.
+  const Scene step = LoadSceneText(TransientWith("loads.time_function", "\"step\"")
+                                       .Set("analysis.initial", "\"static\"")
+                                       .Render(),
+                                   "x.toml");
+  EXPECT_EQ(step.loads.time_function->kind, TimeFunctionKind::kStep);
+}
+
+// Accepted in static and modal analyses, where they change nothing (the CLI warns).
+TEST(SceneValidationAcceptanceTest, AcceptsDampingModesAndTimeFunctionsOutsideTransients) {
+  for (const char* type : {"\"static\"", "\"modal\""}) {
+    SCOPED_TRACE(type);
+    const Scene scene = LoadSceneText(With("analysis.type", type)
+                                          .Set("model.modes", "4")
+                                          .Set("effects.damping.rayleigh", "[10.0, 1e-9]")
+                                          .Set("loads.time_function", "\"sine\"")
+                                          .Set("loads.frequency", "1e4")
+                                          .Render(),
+                                      "x.toml");
+    EXPECT_EQ(scene.model.modes, 4);
+    EXPECT_TRUE(scene.effects.damping->enabled);
+    EXPECT_EQ(scene.loads.time_function->kind, TimeFunctionKind::kSine);
+  }
+}
+
+// A disabled damping table need not name a model: it only switches damping off.
+TEST(SceneValidationAcceptanceTest, AcceptsADisabledDampingTableWithoutParameters) {
+  const Scene scene =
+      LoadSceneText(TransientWith("effects.damping.enabled", "false").Render(), "x.toml");
+  EXPECT_FALSE(scene.effects.damping->enabled);
 }
 
 }  // namespace

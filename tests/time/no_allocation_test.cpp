@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "test_beams.hpp"
 
@@ -89,6 +90,37 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
             }),
             0);
   EXPECT_EQ(status, Status::kOk);
+}
+
+// A hardening spring at the tip: a force of the kind later effects add, written without
+// allocation as NonlinearForce requires.
+class TipSpring : public NonlinearForce {
+ public:
+  explicit TipSpring(int dof) : dof_(dof) {}
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, SymmetricBandMatrix& tangent) override {
+    force[dof_] += 1e3 * d[dof_] * d[dof_] * d[dof_];
+    tangent.Add(dof_, dof_, 3e3 * d[dof_] * d[dof_]);
+    return true;
+  }
+
+ private:
+  int dof_;
+};
+
+TEST(NoAllocationTest, NonlinearStepsAllocateNothing) {
+  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 20, 0));
+  const int n = model.FreeDofCount();
+  TipSpring spring(model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy));
+  NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, spring,
+                                        GeneralizedAlphaParameters::FromSpectralRadius(0.8), 0.01);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  f[model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy)] = -1e-3;
+  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f), Status::kOk);
+  Status status = Status::kOk;
+  EXPECT_EQ(AllocationsDuring(50, [&] { status = integrator.Step(f); }), 0);
+  EXPECT_EQ(status, Status::kOk);
+  EXPECT_GT(integrator.last_iterations(), 1);  // Newton really iterated
 }
 
 }  // namespace

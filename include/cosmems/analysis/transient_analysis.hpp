@@ -65,6 +65,9 @@ struct TransientResult {
   double wall_time_s = 0.0;    ///< set-up and stepping
   double simulated_time_s = 0.0;
   double max_abs_output = 0.0;  ///< m: largest |uy| at the output point
+  /// m: largest -uy at the output point, its deflection toward the substrate (0 when it never
+  /// moves that way)
+  double max_toward_substrate = 0.0;
   std::vector<double> time_s;   ///< history
   std::vector<double> output_m;
 
@@ -107,12 +110,16 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
   step_us.reserve(static_cast<std::size_t>(steps));
   auto record = [&](long i, double uy) {
     result.max_abs_output = std::max(result.max_abs_output, std::abs(uy));
+    result.max_toward_substrate = std::max(result.max_toward_substrate, -uy);
     if (i % stride == 0 || i == steps) {
       result.time_s.push_back(static_cast<double>(i) * options.time_step);
       result.output_m.push_back(uy);
     }
   };
   // Runs the steps; `step(i)` advances to step i and returns its status, `sample()` reads uy.
+  // A linear model whose output point has moved a thousand beam lengths has diverged (an
+  // explicit step just above its stability limit grows geometrically long before it overflows).
+  const double divergence = 1e3 * model.description().Length();
   auto run = [&](auto&& step, auto&& sample) {
     record(0, sample());
     for (long i = 1; i <= steps; ++i) {
@@ -124,7 +131,12 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
         return;
       }
       result.steps = i;
-      record(i, sample());
+      const double uy = sample();
+      record(i, uy);
+      if (std::abs(uy) > divergence) {
+        result.status = Status::kDiverged;
+        return;
+      }
     }
   };
 

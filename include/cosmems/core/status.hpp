@@ -8,6 +8,7 @@ enum class Status {
   kNotPositiveDefinite,  ///< a factorisation met a non-positive pivot (insufficient supports)
   kNotConverged,         ///< an iteration hit its limit before its tolerance
   kNonFinite,            ///< a NaN or infinity appeared in the result
+  kDiverged,             ///< a run grew without bound (e.g. an explicit step above its limit)
 };
 
 /// The JSON/CLI spelling of a status: "ok" or a short reason.
@@ -21,6 +22,8 @@ constexpr const char* ToString(Status status) {
       return "not converged";
     case Status::kNonFinite:
       return "non-finite result";
+    case Status::kDiverged:
+      return "diverged (unstable time step?)";
   }
   return "unknown";
 }

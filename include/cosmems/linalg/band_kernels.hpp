@@ -42,32 +42,35 @@ void SymmetricBandMultiplyAdd(const double* __restrict a, int stride, int n,
 /// L(i, i-k) / L(i, i) at [(i-k) stride + k], `backward` L(j+k, j) / L(j, j) at
 /// [j stride + k], `inverse` 1 / L(i, i).
 ///
-/// Row i needs row i - 1, so the sweeps cannot overlap rows. With the pivots folded in, the
-/// older terms summed first and the two newest values kept in registers (a value stored a row
-/// or two ago would come back through store-to-load forwarding), one multiply-add per row lies
-/// on the critical path and the loads set the pace.
+/// Row i needs row i - 1, so the sweeps cannot overlap rows, and they are bound by loads. The
+/// last W solved values therefore ride along in registers (a window the compiler unrolls; a
+/// value stored a row ago would also come back through store-to-load forwarding), the older
+/// terms are summed first, and one multiply-add per row lies on the critical path.
 template <int W>
 void BandCholeskySolve(const double* __restrict forward, const double* __restrict backward,
                        int stride, const double* __restrict inverse, int n, double* __restrict b) {
-  double newest = 0.0, second = 0.0;
+  double window[W + 1] = {};  // window[k - 1]: the value solved k rows ago
   for (int i = 0; i < n; ++i) {
-    const int reach = std::min(W, i);
     double s = b[i] * inverse[i];
-    for (int k = reach; k >= 3; --k) s -= forward[static_cast<long>(i - k) * stride + k] * b[i - k];
-    if (reach >= 2) s -= forward[static_cast<long>(i - 2) * stride + 2] * second;
-    if (reach >= 1) s -= forward[static_cast<long>(i - 1) * stride + 1] * newest;
-    second = newest;
-    b[i] = newest = s;
+    if (i >= W) {
+      for (int k = W; k >= 1; --k) s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
+    } else {
+      for (int k = i; k >= 1; --k) s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
+    }
+    for (int k = W - 1; k >= 1; --k) window[k] = window[k - 1];
+    b[i] = window[0] = s;
   }
+  for (int k = 0; k < W; ++k) window[k] = 0.0;
   for (int j = n - 1; j >= 0; --j) {
     const double* column = backward + static_cast<long>(j) * stride;
-    const int reach = std::min(W, n - 1 - j);
     double s = b[j] * inverse[j];
-    for (int k = reach; k >= 3; --k) s -= column[k] * b[j + k];
-    if (reach >= 2) s -= column[2] * second;
-    if (reach >= 1) s -= column[1] * newest;
-    second = newest;
-    b[j] = newest = s;
+    if (j + W < n) {
+      for (int k = W; k >= 1; --k) s -= column[k] * window[k - 1];
+    } else {
+      for (int k = n - 1 - j; k >= 1; --k) s -= column[k] * window[k - 1];
+    }
+    for (int k = W - 1; k >= 1; --k) window[k] = window[k - 1];
+    b[j] = window[0] = s;
   }
 }
 

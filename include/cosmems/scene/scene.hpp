@@ -22,6 +22,28 @@ enum class AnalysisType { kStatic, kModal, kBuckling, kPullin, kTransient, kRele
 /// The haptic device driver of a haptic analysis (device.backend).
 enum class DeviceBackend { kScripted, kOpenHaptics };
 
+/// The time integrator of a transient analysis (analysis.integrator).
+enum class Integrator {
+  kNewmark,            ///< "newmark": Newmark-beta with beta, gamma
+  kHht,                ///< "hht": Hilber-Hughes-Taylor with alpha
+  kGeneralizedAlpha,   ///< "generalized-alpha": Chung-Hulbert with rho_inf
+  kCentralDifference,  ///< "central-difference": explicit, conditionally stable
+  kModal,              ///< "modal": model.modes modes propagated exactly
+};
+
+/// Where a transient analysis starts (analysis.initial).
+enum class InitialState {
+  kRest,    ///< "rest": undeformed and still, the loads applied by their time function
+  kStatic,  ///< "static": deflected under the loads, which are removed at t = 0
+};
+
+/// How the loads vary in time in a transient analysis (loads.time_function).
+enum class TimeFunctionKind {
+  kStep,  ///< "step": applied at t = 0 and held
+  kRamp,  ///< "ramp": rising linearly to full over ramp_time, then held
+  kSine,  ///< "sine": times sin(2 pi frequency t)
+};
+
 /// The scene-file spelling: "cantilever" | "bridge".
 constexpr const char* ToString(StructureKind kind) {
   switch (kind) {
@@ -79,6 +101,48 @@ constexpr const char* ToString(DeviceBackend backend) {
   return "unknown";
 }
 
+/// The scene-file and JSON spelling: "newmark" | "hht" | "generalized-alpha" |
+/// "central-difference" | "modal".
+constexpr const char* ToString(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::kNewmark:
+      return "newmark";
+    case Integrator::kHht:
+      return "hht";
+    case Integrator::kGeneralizedAlpha:
+      return "generalized-alpha";
+    case Integrator::kCentralDifference:
+      return "central-difference";
+    case Integrator::kModal:
+      return "modal";
+  }
+  return "unknown";
+}
+
+/// The scene-file spelling: "rest" | "static".
+constexpr const char* ToString(InitialState initial) {
+  switch (initial) {
+    case InitialState::kRest:
+      return "rest";
+    case InitialState::kStatic:
+      return "static";
+  }
+  return "unknown";
+}
+
+/// The scene-file spelling: "step" | "ramp" | "sine".
+constexpr const char* ToString(TimeFunctionKind kind) {
+  switch (kind) {
+    case TimeFunctionKind::kStep:
+      return "step";
+    case TimeFunctionKind::kRamp:
+      return "ramp";
+    case TimeFunctionKind::kSine:
+      return "sine";
+  }
+  return "unknown";
+}
+
 /// [structure]: the beam's shape and supports, in metres. x runs along the beam from the first
 /// support, y away from the substrate, z across the width.
 struct SceneStructure {
@@ -104,21 +168,42 @@ struct SceneModel {
   int dimension = 3;     ///< 2: planar (ux, uy, rz); 3: full 3-D frame
   int elements = 20;     ///< equal elements along the beam
   int series_order = 1;  ///< power-series terms: 0 = Hermite + consistent mass, 1 adds M2, ...
-  int modes = 0;         ///< 0: the full model; k > 0: modal reduction to k modes
+  int modes = 0;         ///< 0: the full model; k > 0: k modes (the "modal" integrator)
 };
 
-/// [loads]: static loads in SI, components along x, y, z.
+/// [loads] time_function and its parameters: the amplitude s(t) that multiplies every load of
+/// a transient analysis. Static and modal analyses take the loads as they are.
+struct SceneTimeFunction {
+  TimeFunctionKind kind = TimeFunctionKind::kStep;
+  double ramp_time = 0.0;  ///< s, > 0: the rise time of a ramp (kRamp only)
+  double frequency = 0.0;  ///< Hz, > 0: s(t) = sin(2 pi frequency t) (kSine only)
+};
+
+/// [loads]: loads in SI, components along x, y, z.
 struct SceneLoads {
   Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();      ///< N at the free end (cantilever)
   Eigen::Vector3d midspan_force = Eigen::Vector3d::Zero();  ///< N at x = length / 2
   Eigen::Vector3d distributed = Eigen::Vector3d::Zero();    ///< N/m over the whole length
   Eigen::Vector3d tip_moment = Eigen::Vector3d::Zero();     ///< N m at the free end (cantilever)
+  /// Empty when the scene does not give loads.time_function: a step.
+  std::optional<SceneTimeFunction> time_function;
 };
 
-/// [analysis]: what to compute, and the parameters of that analysis.
+/// [analysis]: what to compute, and the parameters of that analysis. Only the chosen analysis
+/// reads its parameters; the others keep their defaults.
 struct SceneAnalysis {
   AnalysisType type = AnalysisType::kStatic;
   int count = 4;  ///< modal: the number of modes, lowest first
+
+  // transient
+  double duration = 0.0;   ///< s, > 0
+  double time_step = 0.0;  ///< s, in (0, duration], at most 1e8 steps
+  Integrator integrator = Integrator::kNewmark;
+  double beta = 0.25;    ///< newmark, in [0, 0.5]
+  double gamma = 0.5;    ///< newmark, in [0.5, 1]
+  double alpha = 0.05;   ///< hht, in [0, 1/3]
+  double rho_inf = 0.8;  ///< generalized-alpha: spectral radius at infinite frequency, in [0, 1]
+  InitialState initial = InitialState::kRest;
 };
 
 /// [device]: the haptic device of a haptic analysis.

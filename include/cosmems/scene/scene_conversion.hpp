@@ -1,9 +1,13 @@
 #pragma once
 
+#include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/core/material.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/time/damping_model.hpp"
+#include "cosmems/time/generalized_alpha_parameters.hpp"
+#include "cosmems/time/load_time_function.hpp"
 
 namespace cosmems {
 
@@ -20,5 +24,21 @@ BeamDescription MakeBeamDescription(const Scene& scene);
 /// The scene's loads: tip force and moment at x = length, midspan force at length / 2, and the
 /// distributed load over the whole beam. Zero loads are left out.
 LoadCase MakeLoadCase(const Scene& scene);
+
+/// The damping of [effects.damping] when the table is present and enabled; none otherwise.
+DampingModel MakeDampingModel(const Scene& scene);
+
+/// The amplitude s(t) that multiplies the loads: loads.time_function, a step when absent.
+LoadTimeFunction MakeLoadTimeFunction(const Scene& scene);
+
+/// The Newmark-family parameters of analysis.integrator: Newmark(beta, gamma), Hht(alpha),
+/// FromSpectralRadius(rho_inf) or CentralDifference(). The "modal" integrator takes none and
+/// gets the average-acceleration rule, which it never uses.
+GeneralizedAlphaParameters MakeIntegratorParameters(const SceneAnalysis& analysis);
+
+/// The options of a transient analysis (analysis.type = "transient"): duration, time step,
+/// integrator (model.modes modes for "modal"), initial state, time function, damping, and uy
+/// recorded at the free end of a cantilever (x = length) or the middle of a bridge (length / 2).
+TransientOptions MakeTransientOptions(const Scene& scene);
 
 }  // namespace cosmems

@@ -30,8 +30,8 @@ struct SceneOverride {
 /// Throws SceneError, naming `path` (or "--set" for a key an override wrote), the dotted key and
 /// the value, for an unreadable file, invalid TOML, a missing required key, a value of the
 /// wrong type or outside its range, an unknown key or table, and for any feature that this
-/// version cannot simulate (theories other than "linear", analyses other than "static" and
-/// "modal", enabled effects, an axial load, modal reduction, a [device]).
+/// version cannot simulate (theories other than "linear", analyses other than "static",
+/// "modal" and "transient", enabled effects other than damping, an axial load, a [device]).
 Scene LoadSceneFile(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// As LoadSceneFile for scene text in memory; `source` names it in errors and in Scene::source.

@@ -6,6 +6,7 @@
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
+#include "cosmems/linalg/band_rows.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
@@ -18,8 +19,9 @@ namespace cosmems {
 ///
 /// Every member of the generalised-alpha family solves, per step, the same matrix
 ///   S = ((1 - am) + (1 - af) gamma dt cM) M + ((1 - af) gamma dt cK + (1 - af) beta dt^2) K
-/// for a_(n+1), so S is factorised once at construction and a step is a band product with K
-/// (and with M, unless the member needs none), one back-solve and one pass of updates.
+/// for a_(n+1), so S is factorised once at construction and a step is a row product with K
+/// (and with M, unless the member needs none; BandRows), one back-solve and one pass of
+/// updates.
 /// Step() allocates nothing and throws nothing.
 class LinearNewmarkIntegrator {
  public:
@@ -29,7 +31,9 @@ class LinearNewmarkIntegrator {
                           RayleighDamping damping, GeneralizedAlphaParameters parameters,
                           double time_step, SpdSolverKind solver = SpdSolverKind::kAuto)
       : mass_(mass), stiffness_(stiffness), damping_(damping), p_(parameters), dt_(time_step),
-        coefficients_(MakeCoefficients(parameters, damping, time_step)) {
+        coefficients_(MakeCoefficients(parameters, damping, time_step)),
+        stiffness_rows_(stiffness),
+        pad_(stiffness.bandwidth()) {
     RequirePositive("time_step", time_step);
     const int n = mass.size();
     d_.setZero(n);
@@ -37,8 +41,10 @@ class LinearNewmarkIntegrator {
     a_.setZero(n);
     a_new_.setZero(n);
     f_.setZero(n);
-    x_m_.setZero(n);
-    x_k_.setZero(n);
+    // x_m, x_k carry the zero padding of the row products (BandRows).
+    x_m_.setZero(n + 2 * pad_);
+    x_k_.setZero(n + 2 * pad_);
+
     const double one_af = 1.0 - p_.alpha_f;
     const double s_m = (1.0 - p_.alpha_m) + one_af * p_.gamma * dt_ * damping_.mass;
     const double s_k = one_af * (p_.gamma * dt_ * damping_.stiffness + p_.beta * dt_ * dt_);
@@ -46,6 +52,7 @@ class LinearNewmarkIntegrator {
     s.mutable_data() = s_m * mass.data() + s_k * stiffness.data();
     status_ = solver_.Compute(s, solver);
     uses_mass_ = p_.alpha_m != 0.0 || damping_.mass != 0.0;
+    if (uses_mass_) mass_rows_ = BandRows(mass);
   }
 
   /// Sets the state at t = 0 from d0, v0 and the load f0 there; the initial acceleration
@@ -79,31 +86,32 @@ class LinearNewmarkIntegrator {
     const double af = p_.alpha_f;
     // a_(n+1) = S^-1 (f_(n+1-af) - M x_m - K x_k); x_m, x_k were prepared by the last update.
     a_new_ = (1.0 - af) * f_next + af * f_;
-    if (uses_mass_) mass_.MultiplyAdd(x_m_, a_new_, -1.0);
-    stiffness_.MultiplyAdd(x_k_, a_new_, -1.0);
+    if (uses_mass_) mass_rows_.SubtractProduct(x_m_.data(), a_new_.data());
+    stiffness_rows_.SubtractProduct(x_k_.data(), a_new_.data());
     solver_.SolveInPlace(a_new_);
     if (!a_new_.allFinite()) return Status::kNonFinite;
-    // One pass: Newmark's updates, and the next step's x_m, x_k. Coefficients live in locals
-    // and the vectors behind restrict pointers: otherwise every store could alias a member,
-    // forcing reloads and ruling out vectorisation.
+    // One pass: Newmark's updates and the next step's x_k. Coefficients live in locals and the
+    // vectors behind restrict pointers: otherwise every store could alias a member, forcing
+    // reloads and ruling out vectorisation. The pass is memory-bound, so it touches only what
+    // this member needs: f_n only when af != 0, x_m only when M enters.
     const Coefficients c = coefficients_;
     double* __restrict d = d_.data();
     double* __restrict v = v_.data();
-    double* __restrict a = a_.data();
-    double* __restrict f = f_.data();
-    double* __restrict xm = x_m_.data();
-    double* __restrict xk = x_k_.data();
+    const double* __restrict a = a_.data();
+    double* __restrict xk = x_k_.data() + pad_;
     const double* __restrict an = a_new_.data();
-    const double* __restrict fn = f_next.data();
-    for (Eigen::Index i = 0; i < d_.size(); ++i) {
+    const Eigen::Index n = d_.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
       d[i] += c.dt * v[i] + c.dd_a * a[i] + c.dd_new * an[i];
       v[i] += c.dv_a * a[i] + c.dv_new * an[i];
-      a[i] = an[i];
-      f[i] = fn[i];
-      const double vp = v[i] + c.vp_a * a[i];
-      xm[i] = c.am * a[i] + c.cm * vp;
-      xk[i] = c.ck * vp + d[i] + c.dp_v * v[i] + c.dp_a * a[i];
+      xk[i] = c.ck * (v[i] + c.vp_a * an[i]) + d[i] + c.dp_v * v[i] + c.dp_a * an[i];
     }
+    if (uses_mass_) {
+      double* __restrict xm = x_m_.data() + pad_;
+      for (Eigen::Index i = 0; i < n; ++i) xm[i] = c.am * an[i] + c.cm * (v[i] + c.vp_a * an[i]);
+    }
+    if (p_.alpha_f != 0.0) f_ = f_next;
+    a_.swap(a_new_);
     time_ += dt_;
     return Status::kOk;
   }
@@ -143,8 +151,8 @@ class LinearNewmarkIntegrator {
   void PrepareRow(Eigen::Index i) {
     const Coefficients& c = coefficients_;
     const double vp = v_[i] + c.vp_a * a_[i];
-    x_m_[i] = c.am * a_[i] + c.cm * vp;
-    x_k_[i] = c.ck * vp + d_[i] + c.dp_v * v_[i] + c.dp_a * a_[i];
+    x_m_[pad_ + i] = c.am * a_[i] + c.cm * vp;
+    x_k_[pad_ + i] = c.ck * vp + d_[i] + c.dp_v * v_[i] + c.dp_a * a_[i];
   }
 
   const SymmetricBandMatrix& mass_;
@@ -156,6 +164,9 @@ class LinearNewmarkIntegrator {
   SpdSolver solver_;
   Status status_ = Status::kOk;
   Coefficients coefficients_;
+  BandRows stiffness_rows_;
+  BandRows mass_rows_;
+  int pad_;
   bool uses_mass_ = true;  ///< x_m = am a + cM vp is not identically zero
   Eigen::VectorXd d_, v_, a_, a_new_, f_, x_m_, x_k_;
 };

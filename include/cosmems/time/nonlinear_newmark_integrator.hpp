@@ -37,6 +37,7 @@ class NonlinearNewmarkIntegrator {
       throw std::invalid_argument("beta = 0: the nonlinear path needs an implicit member (beta > 0)");
     }
     const int n = mass.size();
+    factor_.Compute(mass);  // sizes the factor's buffers now, so that no step allocates them
     for (Eigen::VectorXd* v : {&d_, &v_, &a_, &f_, &d_new_, &v_new_, &a_new_, &d_mid_, &v_mid_,
                                &residual_, &work_, &r_, &f_target_, &f_start_, &d_save_, &v_save_,
                                &a_save_}) {

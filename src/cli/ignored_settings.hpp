@@ -1,0 +1,15 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cosmems/scene/scene.hpp"
+
+namespace cosmems::internal {
+
+/// Warnings for settings that the scene's analysis accepts but does not use, where a reader
+/// could expect them to matter: [effects.damping], model.modes > 0 and loads.time_function in a
+/// static or modal analysis (they act in transient analyses only). Empty for other analyses.
+std::vector<std::string> IgnoredSettingWarnings(const Scene& scene);
+
+}  // namespace cosmems::internal

@@ -1,0 +1,118 @@
+#include "transient_report.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+
+#include "cosmems/analysis/transient_analysis.hpp"
+#include "cosmems/scene/scene_conversion.hpp"
+#include "csv_file.hpp"
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+// Times are multiples of the time step and carry its rounding (3 * 1e-6 = 3.0000000000000004e-6);
+// twelve digits tell apart every step of the longest run the scene allows (1e8 steps).
+constexpr int kTimeDigits = 12;
+
+// Where uy is recorded, as JSON keys and CSV headers name it.
+const char* OutputPointName(StructureKind kind) {
+  return kind == StructureKind::kCantilever ? "tip" : "midspan";
+}
+
+template <int Dim>
+std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
+  RunHeader header;
+  header.scene = scene.source;
+  header.analysis = AnalysisType::kTransient;
+  header.model = scene.model;
+  const LoadCase loads = MakeLoadCase(scene);
+  const TransientOptions options = MakeTransientOptions(scene);
+  const auto start = std::chrono::steady_clock::now();
+  const BeamModel<Dim> model(MakeBeamDescription(scene));
+  const TransientResult result = RunTransient(model, loads, options);
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.status = result.status;
+  header.dofs = model.FreeDofCount();
+
+  TransientResults results;
+  results.kind = scene.structure.kind;
+  results.integrator = scene.analysis.integrator;
+  results.modes = std::min(scene.model.modes, header.dofs);
+  results.initial = scene.analysis.initial;
+  results.time_step_s = scene.analysis.time_step;
+  results.steps = result.steps;
+  results.simulated_time_s = result.simulated_time_s;
+  results.step_time = result.step_time;
+  results.realtime_factor =
+      header.wall_time_s > 0.0 ? result.simulated_time_s / header.wall_time_s : 0.0;
+  results.max_abs_uy = result.max_abs_output;
+  results.time_s = result.time_s;
+  results.uy_m = result.output_m;
+
+  if (scene.analysis.integrator == Integrator::kModal && scene.model.modes > header.dofs) {
+    header.warnings.push_back("model.modes = " + std::to_string(scene.model.modes) +
+                              " modes asked for, but the model has only " +
+                              std::to_string(header.dofs));
+  }
+  if (loads.points.empty() && loads.distributed.isZero(0.0)) {
+    header.warnings.push_back("the loads are all zero: the beam stays at rest");
+  }
+  const std::optional<double>& gap = scene.structure.gap;
+  if (result.status == Status::kOk && gap && result.max_toward_substrate >= *gap) {
+    header.warnings.push_back(std::string("the ") + OutputPointName(scene.structure.kind) +
+                              " moves " + Scientific(result.max_toward_substrate) +
+                              " m toward the substrate, at least the gap of " + Significant(*gap) +
+                              " m: it passes through the substrate (contact is not modelled in "
+                              "this version)");
+  }
+  return std::make_unique<TransientReport>(std::move(header), std::move(results));
+}
+
+}  // namespace
+
+std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
+  return scene.model.dimension == 2 ? RunTransientScene<2>(scene) : RunTransientScene<3>(scene);
+}
+
+void TransientReport::AddResults(nlohmann::ordered_json& json) const {
+  json["steps"] = results_.steps;
+  json["step_time_us"] = {{"median", results_.step_time.median_us},
+                          {"p99", results_.step_time.p99_us},
+                          {"max", results_.step_time.max_us}};
+  json["realtime_factor"] = results_.realtime_factor;
+  json[std::string(OutputPointName(results_.kind)) + "_displacement_max"] = results_.max_abs_uy;
+  json["simulated_time_s"] = results_.simulated_time_s;
+  json["integrator"] = ToString(results_.integrator);
+  json["time_step_s"] = results_.time_step_s;
+}
+
+void TransientReport::PrintResults(std::ostream& out) const {
+  out << "integrator            " << ToString(results_.integrator);
+  if (results_.integrator == Integrator::kModal) out << ", " << results_.modes << " modes";
+  out << (results_.initial == InitialState::kStatic ? ", released from the static deflection"
+                                                    : ", from rest")
+      << "\n";
+  out << "time step             " << Significant(results_.time_step_s) << " s\n";
+  out << "steps                 " << results_.steps << " ("
+      << Significant(results_.simulated_time_s) << " s simulated)\n";
+  out << "step time             median " << Significant(results_.step_time.median_us, 3)
+      << " us, p99 " << Significant(results_.step_time.p99_us, 3) << " us, max "
+      << Significant(results_.step_time.max_us, 3) << " us\n";
+  out << "realtime factor       " << Significant(results_.realtime_factor, 3) << "\n";
+  const std::string label = std::string("max |uy| at ") + OutputPointName(results_.kind);
+  out << label << std::string(22 - label.size(), ' ') << Scientific(results_.max_abs_uy) << " m\n";
+}
+
+void TransientReport::WriteFiles(const std::filesystem::path& directory) const {
+  CsvFile csv(directory / "history.csv",
+              std::string("time_s,") + OutputPointName(results_.kind) + "_uy_m");
+  for (std::size_t i = 0; i < results_.time_s.size(); ++i) {
+    csv.Row({CsvFile::Number(results_.time_s[i], kTimeDigits), CsvFile::Number(results_.uy_m[i])});
+  }
+  csv.Close();
+}
+
+}  // namespace cosmems::internal
