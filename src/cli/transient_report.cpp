@@ -48,6 +48,8 @@ std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
   results.step_time = result.step_time;
   results.realtime_factor =
       header.wall_time_s > 0.0 ? result.simulated_time_s / header.wall_time_s : 0.0;
+  results.stepping_realtime_factor =
+      result.stepping_time_s > 0.0 ? result.simulated_time_s / result.stepping_time_s : 0.0;
   results.max_abs_uy = result.max_abs_output;
   results.time_s = result.time_s;
   results.uy_m = result.output_m;
@@ -83,6 +85,7 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
                           {"p99", results_.step_time.p99_us},
                           {"max", results_.step_time.max_us}};
   json["realtime_factor"] = results_.realtime_factor;
+  json["stepping_realtime_factor"] = results_.stepping_realtime_factor;
   json[std::string(OutputPointName(results_.kind)) + "_displacement_max"] = results_.max_abs_uy;
   json["simulated_time_s"] = results_.simulated_time_s;
   json["integrator"] = ToString(results_.integrator);
@@ -101,7 +104,9 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << "step time             median " << Significant(results_.step_time.median_us, 3)
       << " us, p99 " << Significant(results_.step_time.p99_us, 3) << " us, max "
       << Significant(results_.step_time.max_us, 3) << " us\n";
-  out << "realtime factor       " << Significant(results_.realtime_factor, 3) << "\n";
+  out << "realtime factor       " << Significant(results_.realtime_factor, 3)
+      << " (model set-up included), " << Significant(results_.stepping_realtime_factor, 3)
+      << " for the steps alone\n";
   const std::string label = std::string("max |uy| at ") + OutputPointName(results_.kind);
   out << label << std::string(22 - label.size(), ' ') << Scientific(results_.max_abs_uy) << " m\n";
 }

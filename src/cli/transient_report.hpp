@@ -21,6 +21,9 @@ struct TransientResults {
   double simulated_time_s = 0.0;
   StepTiming step_time;          ///< per-step compute time [us]
   double realtime_factor = 0.0;  ///< simulated time over the header's wall time
+  /// simulated time over the time spent in steps only: whether the stepping keeps up with
+  /// real time once the model is built
+  double stepping_realtime_factor = 0.0;
   double max_abs_uy = 0.0;       ///< m: largest |uy| at the output point
   std::vector<double> time_s;    ///< the recorded history
   std::vector<double> uy_m;

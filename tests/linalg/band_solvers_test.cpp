@@ -7,6 +7,7 @@
 
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/linalg/cholmod_solver.hpp"
+#include "cosmems/linalg/spd_solver.hpp"
 
 namespace cosmems {
 namespace {
@@ -67,6 +68,25 @@ TEST(BandCholeskyTest, ReportsASingularMatrixInsteadOfReturningGarbage) {
   CholmodSolver cholmod;
   cholmod.Compute(a.ToSparse());
   EXPECT_NE(cholmod.info(), Status::kOk);
+}
+
+}  // namespace
+}  // namespace cosmems
+
+namespace cosmems {
+namespace {
+
+// The automatic choice follows bench/linear_step_bench: CHOLMOD for spatial frames of at most
+// 24 unknowns, the band otherwise.
+TEST(SpdSolverTest, AutomaticChoiceFollowsTheMeasuredCrossovers) {
+  const auto stiffness = [](int unknowns, int bandwidth) {
+    return SymmetricBandMatrix(unknowns, bandwidth);
+  };
+  EXPECT_EQ(SpdSolver::Choose(stiffness(12, 11)), SpdSolverKind::kCholmod);  // 3-D, 2 elements
+  EXPECT_EQ(SpdSolver::Choose(stiffness(24, 11)), SpdSolverKind::kCholmod);  // 3-D, 4 elements
+  EXPECT_EQ(SpdSolver::Choose(stiffness(30, 11)), SpdSolverKind::kBand);     // 3-D, 5 elements
+  EXPECT_EQ(SpdSolver::Choose(stiffness(6, 5)), SpdSolverKind::kBand);       // 2-D, 2 elements
+  EXPECT_EQ(SpdSolver::Choose(stiffness(60, 5)), SpdSolverKind::kBand);      // 2-D, 20 elements
 }
 
 }  // namespace

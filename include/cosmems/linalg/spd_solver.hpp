@@ -12,7 +12,7 @@ namespace cosmems {
 
 /// Which factorisation solves a symmetric positive definite system.
 enum class SpdSolverKind {
-  kAuto,     ///< the measured fastest for a band matrix (see Compute)
+  kAuto,     ///< the measured fastest for the matrix (see SpdSolver::Choose)
   kDense,    ///< Eigen's dense LLT: tiny systems
   kBand,     ///< band Cholesky: one beam
   kCholmod,  ///< SuiteSparse CHOLMOD: large or multi-beam systems
@@ -22,12 +22,17 @@ enum class SpdSolverKind {
 /// measurement, not by type. Compute() once; SolveInPlace() allocates nothing.
 class SpdSolver {
  public:
+  /// The measured fastest per Newmark step (bench/linear_step_bench, README): the band
+  /// factorisation, except for spatial frames (bandwidth 11) of at most 24 unknowns, whose
+  /// uncoupled axial, torsion and bending fields leave the band mostly zeros that CHOLMOD's
+  /// ordering skips (2 elements: 182 vs 274 ns; from 5 elements on the band wins, 509 vs
+  /// 571 ns). Dense LLT was slower at every size (planar, 1 element: 75 vs 51 ns).
+  static SpdSolverKind Choose(const SymmetricBandMatrix& a) {
+    return a.bandwidth() > 5 && a.size() <= 24 ? SpdSolverKind::kCholmod : SpdSolverKind::kBand;
+  }
+
   Status Compute(const SymmetricBandMatrix& a, SpdSolverKind kind = SpdSolverKind::kAuto) {
-    // kAuto is the band factorisation at every size: per Newmark step it beat dense LLT from
-    // one element on (61 vs 77 ns planar) and CHOLMOD at every size measured up to 500
-    // elements (18 vs 37 us planar, 55 vs 84 us spatial; bench/linear_step_bench). Dense and
-    // CHOLMOD stay available by name; CHOLMOD is for systems whose sparsity is not a band.
-    kind_ = kind == SpdSolverKind::kAuto ? SpdSolverKind::kBand : kind;
+    kind_ = kind == SpdSolverKind::kAuto ? Choose(a) : kind;
     switch (kind_) {
       case SpdSolverKind::kDense:
         dense_.compute(a.ToDense());

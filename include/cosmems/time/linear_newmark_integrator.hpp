@@ -85,7 +85,11 @@ class LinearNewmarkIntegrator {
     if (status_ != Status::kOk) return status_;
     const double af = p_.alpha_f;
     // a_(n+1) = S^-1 (f_(n+1-af) - M x_m - K x_k); x_m, x_k were prepared by the last update.
-    a_new_ = (1.0 - af) * f_next + af * f_;
+    if (af == 0.0) {
+      a_new_ = f_next;
+    } else {
+      a_new_ = (1.0 - af) * f_next + af * f_;
+    }
     if (uses_mass_) mass_rows_.SubtractProduct(x_m_.data(), a_new_.data());
     stiffness_rows_.SubtractProduct(x_k_.data(), a_new_.data());
     solver_.SolveInPlace(a_new_);
