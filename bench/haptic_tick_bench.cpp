@@ -22,7 +22,8 @@ void BM_HapticTickModal(benchmark::State& state) {
   const Eigen::MatrixXd pattern = AssembleLoads(model, TipForce());
   ModalOptions options;
   options.count = 4;
-  const ModalModel modal = MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
+  const ModalModel modal =
+      MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
   const double dt = 1e-6;
   ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
                              modal.ResidualFlexibility(model, pattern), dt / model.units().time);
@@ -41,8 +42,9 @@ void BM_HapticTickModal(benchmark::State& state) {
     benchmark::DoNotOptimize(propagator.DisplacementAt(tip));
   }
   state.counters["steps"] = steps;
-  state.counters["realtime_factor"] = benchmark::Counter(kTick * static_cast<double>(state.iterations()),
-                                                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["realtime_factor"] =
+      benchmark::Counter(kTick * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_HapticTickModal)->Unit(benchmark::kMicrosecond);
 

@@ -2,9 +2,8 @@
 // and bridge (planar model) against the roots of cos x cosh x = -/+1, for meshes of 1 ... 40
 // elements and series orders 0 ... 3: what each term of the power series buys on a mesh.
 #include <cmath>
-#include <cstdio>
-
 #include <cosmems/cosmems.hpp>
+#include <cstdio>
 
 namespace {
 
@@ -12,7 +11,8 @@ namespace {
 double FrequencyRoot(int n, double sign) {
   double x = (sign < 0 ? 2 * n - 1 : 2 * n + 1) * cosmems::kPi / 2;
   for (int i = 0; i < 50; ++i) {
-    x -= (std::cos(x) * std::cosh(x) - sign) / (-std::sin(x) * std::cosh(x) + std::cos(x) * std::sinh(x));
+    x -= (std::cos(x) * std::cosh(x) - sign) /
+         (-std::sin(x) * std::cosh(x) + std::cos(x) * std::sinh(x));
   }
   return x;
 }
@@ -28,10 +28,12 @@ int main() {
   for (const auto kind : {cosmems::StructureKind::kCantilever, cosmems::StructureKind::kBridge}) {
     const bool bridge = kind == cosmems::StructureKind::kBridge;
     std::printf("%s: relative error of modes 1-4\n", bridge ? "bridge" : "cantilever");
-    std::printf("%9s %6s %10s %10s %10s %10s\n", "elements", "order", "mode 1", "mode 2", "mode 3", "mode 4");
+    std::printf("%9s %6s %10s %10s %10s %10s\n", "elements", "order", "mode 1", "mode 2", "mode 3",
+                "mode 4");
     for (int order = 0; order <= 3; ++order) {
       for (int elements : {2, 4, 8, 20, 40}) {
-        const cosmems::BeamModel<2> model(cosmems::MakeStructure(kind, length, silicon, section, elements, order));
+        const cosmems::BeamModel<2> model(
+            cosmems::MakeStructure(kind, length, silicon, section, elements, order));
         cosmems::ModalOptions options;
         options.count = 4;
         const cosmems::ModalResult result = cosmems::SolveModal(model, options);

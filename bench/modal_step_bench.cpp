@@ -15,7 +15,8 @@ void BM_ModalStep(benchmark::State& state) {
   const Eigen::MatrixXd pattern = AssembleLoads(model, loads);
   ModalOptions options;
   options.count = static_cast<int>(state.range(0));
-  const ModalModel modal = MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
+  const ModalModel modal =
+      MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
   ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
                              modal.ResidualFlexibility(model, pattern), 1e-6 / model.units().time);
   const int n = model.FreeDofCount();

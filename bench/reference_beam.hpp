@@ -9,8 +9,8 @@
 namespace cosmems::bench {
 
 inline BeamDescription ReferenceBeam(StructureKind kind, int elements, int order) {
-  return MakeStructure(kind, 200e-6, Material{169e9, 2330.0, 0.22},
-                       RectangularSection{20e-6, 2e-6}, elements, order);
+  return MakeStructure(kind, 200e-6, Material{169e9, 2330.0, 0.22}, RectangularSection{20e-6, 2e-6},
+                       elements, order);
 }
 
 /// Element counts 2 ... 200.

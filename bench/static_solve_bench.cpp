@@ -22,9 +22,15 @@ void BM_StaticSolve(benchmark::State& state) {
   }
   state.counters["dofs"] = model.FreeDofCount();
 }
-BENCHMARK(BM_StaticSolve<2, LinearSolverKind::kBand>)->Apply(bench::ElementCounts)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_StaticSolve<3, LinearSolverKind::kBand>)->Apply(bench::ElementCounts)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_StaticSolve<3, LinearSolverKind::kCholmod>)->Apply(bench::ElementCounts)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticSolve<2, LinearSolverKind::kBand>)
+    ->Apply(bench::ElementCounts)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticSolve<3, LinearSolverKind::kBand>)
+    ->Apply(bench::ElementCounts)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_StaticSolve<3, LinearSolverKind::kCholmod>)
+    ->Apply(bench::ElementCounts)
+    ->Unit(benchmark::kMicrosecond);
 
 template <int Dim>
 void BM_BandBackSolve(benchmark::State& state) {

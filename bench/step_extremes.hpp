@@ -4,11 +4,11 @@
 // haptic loop cares about the slowest. Each of 20000 steps is timed on its own with
 // steady_clock, whose own cost (about 20 ns here) is included in the figures.
 
+#include <benchmark/benchmark.h>
+
 #include <algorithm>
 #include <chrono>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 namespace cosmems::bench {
 
@@ -19,7 +19,8 @@ void RecordStepExtremes(benchmark::State& state, Step&& step) {
   for (double& sample : ns) {
     const auto start = std::chrono::steady_clock::now();
     step();
-    sample = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+    sample =
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
   }
   std::sort(ns.begin(), ns.end());
   state.counters["p50_ns"] = ns[kSamples / 2];

@@ -24,8 +24,8 @@ struct TransientResults {
   /// simulated time over the time spent in steps only: whether the stepping keeps up with
   /// real time once the model is built
   double stepping_realtime_factor = 0.0;
-  double max_abs_uy = 0.0;       ///< m: largest |uy| at the output point
-  std::vector<double> time_s;    ///< the recorded history
+  double max_abs_uy = 0.0;     ///< m: largest |uy| at the output point
+  std::vector<double> time_s;  ///< the recorded history
   std::vector<double> uy_m;
 };
 

@@ -2,9 +2,8 @@
 
 #include <cholmod.h>
 
-#include <vector>
-
 #include <Eigen/CholmodSupport>
+#include <vector>
 
 namespace cosmems {
 

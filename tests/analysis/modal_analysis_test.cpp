@@ -13,8 +13,8 @@ double RhoA() { return test::Silicon().density * test::ReferenceSection().Area()
 double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
 
 std::vector<double> Frequencies(StructureKind kind, int elements, int order, int count) {
-  const BeamModel<2> model(MakeStructure(kind, kL, test::Silicon(), test::ReferenceSection(),
-                                         elements, order));
+  const BeamModel<2> model(
+      MakeStructure(kind, kL, test::Silicon(), test::ReferenceSection(), elements, order));
   ModalOptions options;
   options.count = count;
   const ModalResult result = SolveModal(model, options);
@@ -73,7 +73,8 @@ TEST(ModalAnalysisTest, HigherSeriesOrdersAreMoreAccurate) {
   const double exact = Exact(StructureKind::kCantilever, 3);
   double previous = 1.0;
   for (int order = 0; order <= 4; ++order) {
-    const double e = std::abs(Frequencies(StructureKind::kCantilever, 4, order, 3)[2] - exact) / exact;
+    const double e =
+        std::abs(Frequencies(StructureKind::kCantilever, 4, order, 3)[2] - exact) / exact;
     EXPECT_LT(e, 0.1 * previous) << "order " << order;
     previous = e;
   }
@@ -97,11 +98,12 @@ TEST(ModalAnalysisTest, SpatialModesHaveTheirKindsAndFrequencies) {
   };
   const double eiy = si.young_modulus * s.SecondMomentY();
   const double bending_z = test::BendingFrequency(test::FrequencyRoot(1, -1), kL, eiy, RhoA());
-  const double torsion = 0.25 / kL *
-                         std::sqrt(si.ShearModulus() * s.TorsionConstant() /
-                                   (si.density * s.PolarMoment()));
+  const double torsion =
+      0.25 / kL *
+      std::sqrt(si.ShearModulus() * s.TorsionConstant() / (si.density * s.PolarMoment()));
   EXPECT_EQ(r.modes[0].kind, ModeKind::kBendingY);
-  EXPECT_NEAR(first_of(ModeKind::kBendingY), Exact(StructureKind::kCantilever, 1), 1e-8 * bending_z);
+  EXPECT_NEAR(first_of(ModeKind::kBendingY), Exact(StructureKind::kCantilever, 1),
+              1e-8 * bending_z);
   EXPECT_NEAR(first_of(ModeKind::kBendingZ), bending_z, 1e-8 * bending_z);
   // A bar element of order 1 converges at h^4 (about 4e-8 at 30 elements).
   EXPECT_NEAR(first_of(ModeKind::kTorsion), torsion, 1e-6 * torsion);

@@ -14,7 +14,8 @@ const double kL = test::kReferenceLength;
 double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
 double Eiy() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentY(); }
 
-LoadCase PointAt(double x, Eigen::Vector3d force, Eigen::Vector3d moment = Eigen::Vector3d::Zero()) {
+LoadCase PointAt(double x, Eigen::Vector3d force,
+                 Eigen::Vector3d moment = Eigen::Vector3d::Zero()) {
   LoadCase loads;
   loads.points.push_back({x, force, moment});
   return loads;
@@ -69,8 +70,8 @@ TEST(StaticAnalysisTest, SpatialCantileverAnswersEveryLoadComponent) {
 
 TEST(StaticAnalysisTest, BridgeUnderCentreLoadAndUniformLoad) {
   const double p = -1e-5, q = -0.05;
-  const BeamModel<3> model(MakeStructure(StructureKind::kBridge, kL, test::Silicon(),
-                                         test::ReferenceSection(), 4, 1));
+  const BeamModel<3> model(
+      MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(), 4, 1));
   const double centre = Solve(model, PointAt(kL / 2, {0, p, 0})).At(kL / 2)[1];
   EXPECT_NEAR(centre, p * kL * kL * kL / (192 * Eiz()), kRoundOff * std::abs(centre));
   LoadCase uniform;
@@ -83,8 +84,8 @@ TEST(StaticAnalysisTest, BridgeUnderCentreLoadAndUniformLoad) {
 // x = L/3, 2L/3 exact on w(x) = P x^2 (3L - 4x) / (48 EI).
 TEST(StaticAnalysisTest, PointLoadBetweenNodesKeepsTheNodesExact) {
   const double p = -1e-5;
-  const BeamModel<2> model(MakeStructure(StructureKind::kBridge, kL, test::Silicon(),
-                                         test::ReferenceSection(), 3, 0));
+  const BeamModel<2> model(
+      MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(), 3, 0));
   const auto nodes = Solve(model, PointAt(kL / 2, {0, p, 0})).AtNodes();
   const double x = kL / 3;
   const double expected = p * x * x * (3 * kL - 4 * x) / (48 * Eiz());
@@ -114,15 +115,15 @@ TEST(StaticAnalysisTest, MultiMaterialCantileverFollowsTheUnitLoadMethod) {
   BeamDescription beam = UniformBeam(kL, test::Silicon(), test::ReferenceSection(), 4, 1);
   for (int e = 2; e < 4; ++e) {
     beam.elements[e].material.young_modulus = 70e9;  // a softer outer half
-    beam.elements[e].section.thickness = 1.5e-6;      // and thinner: a stepped, tapered beam
+    beam.elements[e].section.thickness = 1.5e-6;     // and thinner: a stepped, tapered beam
   }
   beam.supports.front() = Support::kClamped;
   const double p = -1e-7;
   const double ei1 = Eiz();
   const double ei2 = 70e9 * RectangularSection{20e-6, 1.5e-6}.SecondMomentZ();
   const double a = kL / 2;
-  const double expected = p / ei1 * (std::pow(kL, 3) - std::pow(kL - a, 3)) / 3 +
-                          p / ei2 * std::pow(kL - a, 3) / 3;
+  const double expected =
+      p / ei1 * (std::pow(kL, 3) - std::pow(kL - a, 3)) / 3 + p / ei2 * std::pow(kL - a, 3) / 3;
   const double tip = Solve(BeamModel<3>(beam), PointAt(kL, {0, p, 0})).At(kL)[1];
   EXPECT_NEAR(tip, expected, kRoundOff * std::abs(expected));
 }
@@ -137,11 +138,12 @@ TEST(StaticAnalysisTest, BendingStressAtTheRootIsPLcOverI) {
 }
 
 TEST(StaticAnalysisTest, CholmodAndBandPathsAgree) {
-  const BeamModel<3> model(MakeStructure(StructureKind::kBridge, kL, test::Silicon(),
-                                         test::ReferenceSection(), 50, 1));
+  const BeamModel<3> model(
+      MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(), 50, 1));
   const LoadCase loads = PointAt(0.3 * kL, {1e-6, -1e-5, 2e-6}, {1e-12, 0, 0});
   const Eigen::VectorXd band = SolveStatic(model, loads, LinearSolverKind::kBand).displacement;
-  const Eigen::VectorXd cholmod = SolveStatic(model, loads, LinearSolverKind::kCholmod).displacement;
+  const Eigen::VectorXd cholmod =
+      SolveStatic(model, loads, LinearSolverKind::kCholmod).displacement;
   EXPECT_LT((band - cholmod).norm(), kRoundOff * band.norm());
 }
 

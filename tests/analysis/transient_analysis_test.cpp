@@ -1,8 +1,10 @@
 // Transient runs of the reference cantilever: release, damping, step load, both paths.
-#include <Eigen/Eigenvalues>
+#include "cosmems/analysis/transient_analysis.hpp"
+
 #include <gtest/gtest.h>
 
-#include "cosmems/analysis/transient_analysis.hpp"
+#include <Eigen/Eigenvalues>
+
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -51,7 +53,8 @@ TEST(TransientAnalysisTest, ModalReleaseFollowsItsModes) {
   const BeamModel<2> model = Reference();
   const TransientResult r = RunTransient(model, TipForce(), Release(TimePath::kModal, 4, 3, 40));
   ASSERT_EQ(r.status, Status::kOk);
-  const Eigen::VectorXd d0 = BandCholesky(model.Stiffness()).Solve(AssembleLoads(model, TipForce()));
+  const Eigen::VectorXd d0 =
+      BandCholesky(model.Stiffness()).Solve(AssembleLoads(model, TipForce()));
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(model.Stiffness().ToDense(),
                                                                 model.Mass(0).ToDense());
   const Eigen::VectorXd q0 = eig.eigenvectors().transpose() * (model.Mass(0) * d0);
@@ -60,9 +63,11 @@ TEST(TransientAnalysisTest, ModalReleaseFollowsItsModes) {
   for (std::size_t k = 0; k < r.time_s.size(); ++k) {
     double exact = 0.0;
     for (int m = 0; m < 4; ++m) {
-      exact += eig.eigenvectors()(tip, m) * std::cos(std::sqrt(eig.eigenvalues()[m]) * r.time_s[k] / time_unit) * q0[m];
+      exact += eig.eigenvectors()(tip, m) *
+               std::cos(std::sqrt(eig.eigenvalues()[m]) * r.time_s[k] / time_unit) * q0[m];
     }
-    ASSERT_NEAR(r.output_m[k], exact * model.units().length, 1e-7 * std::abs(StaticTip())) << "t = " << r.time_s[k];
+    ASSERT_NEAR(r.output_m[k], exact * model.units().length, 1e-7 * std::abs(StaticTip()))
+        << "t = " << r.time_s[k];
   }
   EXPECT_EQ(r.steps, 120);
 }
@@ -77,14 +82,16 @@ TEST(TransientAnalysisTest, QualityFactorSetsTheLogarithmicDecrement) {
   ASSERT_EQ(r.status, Status::kOk);
   std::vector<double> minima;  // the tip starts at its most negative: track the troughs
   for (std::size_t k = 1; k + 1 < r.output_m.size(); ++k) {
-    if (r.output_m[k] < r.output_m[k - 1] && r.output_m[k] <= r.output_m[k + 1]) minima.push_back(r.output_m[k]);
+    if (r.output_m[k] < r.output_m[k - 1] && r.output_m[k] <= r.output_m[k + 1])
+      minima.push_back(r.output_m[k]);
   }
   ASSERT_GE(minima.size(), 8u);
   const double zeta = 1.0 / 40.0;
   const double expected = std::exp(-2 * kPi * zeta / std::sqrt(1 - zeta * zeta));
   // Troughs are sampled at 2000 points a period: a timing error of 1/4000 of a period moves a
   // trough by (2 pi / 4000)^2 / 2 = 1.2e-6 of itself.
-  for (std::size_t k = 1; k < minima.size(); ++k) EXPECT_NEAR(minima[k] / minima[k - 1], expected, 1e-5);
+  for (std::size_t k = 1; k < minima.size(); ++k)
+    EXPECT_NEAR(minima[k] / minima[k - 1], expected, 1e-5);
 }
 
 // A suddenly applied tip force from rest: an undamped structure overshoots to twice its static

@@ -1,7 +1,8 @@
 // Frame elements and assembled matrices: rigid-body motions (which fix every sign convention),
 // the classical 3-D frame entries, total mass and rotary inertia, symmetry and definiteness.
-#include <Eigen/Cholesky>
 #include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
 
 #include "test_beams.hpp"
 
@@ -28,10 +29,10 @@ Eigen::Matrix<double, 12, 6> RigidMotions(double l) {
   for (int node = 0; node < 2; ++node) {
     const double x = node * l;
     const int o = 6 * node;
-    r(o + 0, 0) = 1;  // translation x
-    r(o + 1, 1) = 1;  // translation y
-    r(o + 2, 2) = 1;  // translation z
-    r(o + 3, 3) = 1;  // rotation about x
+    r(o + 0, 0) = 1;   // translation x
+    r(o + 1, 1) = 1;   // translation y
+    r(o + 2, 2) = 1;   // translation z
+    r(o + 3, 3) = 1;   // rotation about x
     r(o + 2, 4) = -x;  // rotation about y: uz = -x theta, ry = theta
     r(o + 4, 4) = 1;
     r(o + 1, 5) = x;  // rotation about z: uy = x theta, rz = theta
@@ -81,10 +82,10 @@ TEST(FrameElementTest, PlanarElementIsTheInPlaneBlockOfTheSpatialOne) {
   const FrameBases bases(2);
   const int map[6] = {0, 1, 5, 6, 7, 11};  // ux, uy, rz of both nodes
   for (int term = -1; term <= 2; ++term) {
-    const auto planar = term < 0 ? FrameElement<2>(p).Stiffness(bases)
-                                 : FrameElement<2>(p).Mass(bases, term);
-    const auto spatial = term < 0 ? FrameElement<3>(p).Stiffness(bases)
-                                  : FrameElement<3>(p).Mass(bases, term);
+    const auto planar =
+        term < 0 ? FrameElement<2>(p).Stiffness(bases) : FrameElement<2>(p).Mass(bases, term);
+    const auto spatial =
+        term < 0 ? FrameElement<3>(p).Stiffness(bases) : FrameElement<3>(p).Mass(bases, term);
     for (int a = 0; a < 6; ++a) {
       for (int b = 0; b < 6; ++b) EXPECT_DOUBLE_EQ(planar(a, b), spatial(map[a], map[b]));
     }

@@ -4,14 +4,14 @@
 //     integrals taken by quadrature: no polynomial algebra shared with the library;
 //  2. the exact (transcendental) dynamic stiffness of the element, whose Taylor coefficients in
 //     w^2 the mass terms must be.
+#include "cosmems/beam/power_series_basis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
 #include <cmath>
 #include <functional>
 #include <vector>
-
-#include <Eigen/LU>
-#include <gtest/gtest.h>
-
-#include "cosmems/beam/power_series_basis.hpp"
 
 namespace cosmems {
 namespace {
@@ -145,7 +145,8 @@ TEST(PowerSeriesBasisTest, ShapeFunctionsSolveTheRecursionWithHomogeneousNodalVa
 }
 
 // Exact dynamic stiffness of a bar (EA = rho A = l = 1): D = b / sin b [[cos b, -1], [-1, cos b]]
-// with b = w. Its Taylor coefficients are the mass terms: D - D_k = -b^(2k+4) M_(k+1) + O(b^(2k+6)).
+// with b = w. Its Taylor coefficients are the mass terms: D - D_k = -b^(2k+4) M_(k+1) +
+// O(b^(2k+6)).
 TEST(PowerSeriesBasisTest, BarTermsAreTheTaylorCoefficientsOfTheExactDynamicStiffness) {
   const PowerSeriesBasis basis(FieldKind::kBar, 4);
   const double w2 = 0.5;  // w^2; the series converges for w^2 < pi^2
@@ -175,10 +176,18 @@ TEST(PowerSeriesBasisTest, BendingTermsAreTheTaylorCoefficientsOfTheExactDynamic
                  sh = std::sinh(b * s);
     const double p = std::pow(b, d);
     switch (d % 4) {
-      case 0: v << c, sn, ch, sh; break;
-      case 1: v << -sn, c, sh, ch; break;
-      case 2: v << -c, -sn, ch, sh; break;
-      default: v << sn, -c, sh, ch; break;
+      case 0:
+        v << c, sn, ch, sh;
+        break;
+      case 1:
+        v << -sn, c, sh, ch;
+        break;
+      case 2:
+        v << -c, -sn, ch, sh;
+        break;
+      default:
+        v << sn, -c, sh, ch;
+        break;
     }
     return Eigen::Vector4d(p * v);
   };

@@ -91,7 +91,8 @@ TEST(TransientCliTest, ReleaseJsonCarriesTheContractFields) {
   EXPECT_GT(wall, 0.0);
   EXPECT_DOUBLE_EQ(json.at("realtime_factor").get<double>(), 1e-3 / wall);
   // The steps alone take part of the wall time, so they run at least as fast as the whole.
-  EXPECT_GE(json.at("stepping_realtime_factor").get<double>(), json.at("realtime_factor").get<double>());
+  EXPECT_GE(json.at("stepping_realtime_factor").get<double>(),
+            json.at("realtime_factor").get<double>());
   EXPECT_GT(json.at("tip_displacement_max").get<double>(), 0.0);
   EXPECT_FALSE(json.contains("midspan_displacement_max"));
   EXPECT_DOUBLE_EQ(json.at("simulated_time_s").get<double>(), 1e-3);

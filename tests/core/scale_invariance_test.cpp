@@ -22,7 +22,8 @@ Answers Solve(double length, StructureKind kind) {
   const BeamModel<Dim> model(MakeStructure(kind, length, test::Silicon(), s, 20, 1));
   LoadCase loads;
   const double x = kind == StructureKind::kCantilever ? length : 0.5 * length;
-  loads.points.push_back({x, Eigen::Vector3d(0, -1e3 * length * length, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back(
+      {x, Eigen::Vector3d(0, -1e3 * length * length, 0), Eigen::Vector3d::Zero()});
   const StaticSolution solution = SolveStatic(model, loads);
   const BeamField<Dim> field(model, solution.displacement);
   ModalOptions options;
@@ -37,7 +38,8 @@ void ExpectScaleInvariant(StructureKind kind) {
   const Answers nano = Solve<Dim>(100e-9, kind);
   const Answers milli = Solve<Dim>(1e-3, kind);
   constexpr double kTolerance = 1e-9;
-  EXPECT_NEAR(nano.tip_over_length, milli.tip_over_length, kTolerance * std::abs(milli.tip_over_length));
+  EXPECT_NEAR(nano.tip_over_length, milli.tip_over_length,
+              kTolerance * std::abs(milli.tip_over_length));
   EXPECT_NEAR(nano.slope, milli.slope, kTolerance * std::abs(milli.slope));
   EXPECT_NEAR(nano.stress, milli.stress, kTolerance * milli.stress);
   EXPECT_NEAR(nano.frequency_times_length, milli.frequency_times_length,
@@ -45,7 +47,9 @@ void ExpectScaleInvariant(StructureKind kind) {
 }
 
 TEST(ScaleInvarianceTest, PlanarCantilever) { ExpectScaleInvariant<2>(StructureKind::kCantilever); }
-TEST(ScaleInvarianceTest, SpatialCantilever) { ExpectScaleInvariant<3>(StructureKind::kCantilever); }
+TEST(ScaleInvarianceTest, SpatialCantilever) {
+  ExpectScaleInvariant<3>(StructureKind::kCantilever);
+}
 TEST(ScaleInvarianceTest, SpatialBridge) { ExpectScaleInvariant<3>(StructureKind::kBridge); }
 
 }  // namespace

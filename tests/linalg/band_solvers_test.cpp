@@ -1,9 +1,8 @@
 // Band storage and the band and CHOLMOD factorisations against Eigen's dense LLT.
-#include <random>
+#include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
-
-#include <gtest/gtest.h>
+#include <random>
 
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/linalg/cholmod_solver.hpp"

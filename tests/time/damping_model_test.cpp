@@ -1,7 +1,7 @@
 // Damping as scenes declare it: quality factor and Rayleigh, and their conversions.
-#include <gtest/gtest.h>
-
 #include "cosmems/time/damping_model.hpp"
+
+#include <gtest/gtest.h>
 
 namespace cosmems {
 namespace {

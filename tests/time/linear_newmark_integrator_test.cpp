@@ -1,10 +1,12 @@
 // The Newmark family on a single-degree-of-freedom oscillator (a 1 x 1 band system) against
 // its closed-form algorithmic properties, and on the reference cantilever against modal
 // superposition of the same semi-discrete system.
-#include <Eigen/Eigenvalues>
+#include "cosmems/time/linear_newmark_integrator.hpp"
+
 #include <gtest/gtest.h>
 
-#include "cosmems/time/linear_newmark_integrator.hpp"
+#include <Eigen/Eigenvalues>
+
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -48,7 +50,8 @@ TEST(LinearNewmarkIntegratorTest, PeriodMatchesTheAlgorithmicPeriodOfEachMember)
       const double expected = 2.0 * kPi / (std::acos(c) / dt);
       const auto p = GeneralizedAlphaParameters::Newmark(beta, 0.5);
       // Interpolated crossings carry an O(dt^2) error at each end, averaged over 60 cycles.
-      EXPECT_NEAR(MeasuredPeriod(p, omega, dt), expected, 2e-3 * dt) << "beta " << beta << " W " << w_dt;
+      EXPECT_NEAR(MeasuredPeriod(p, omega, dt), expected, 2e-3 * dt)
+          << "beta " << beta << " W " << w_dt;
     }
   }
 }
@@ -83,7 +86,8 @@ double SpectralRadius(GeneralizedAlphaParameters p, double w_dt) {
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(c).cwiseQuotient(scale);
     integrator.SetState(Vec(e[0]), Vec(e[1]), Vec(e[2]), Vec(0.0));
     EXPECT_EQ(integrator.Step(Vec(0.0)), Status::kOk);
-    a.col(c) << integrator.displacement()[0], integrator.velocity()[0], integrator.acceleration()[0];
+    a.col(c) << integrator.displacement()[0], integrator.velocity()[0],
+        integrator.acceleration()[0];
     a.col(c) = a.col(c).cwiseProduct(scale).eval();
   }
   return a.eigenvalues().cwiseAbs().maxCoeff();
@@ -114,15 +118,17 @@ TEST(LinearNewmarkIntegratorTest, SpectralRadiiMatchTheory) {
 TEST(LinearNewmarkIntegratorTest, SecondOrderConvergenceInTimeStep) {
   const double w = 2.0 * kPi;
   const double exact = (std::sin(1.0) - std::sin(w) / w) / (w * w - 1.0);
-  for (auto p : {GeneralizedAlphaParameters::Newmark(0.25, 0.5), GeneralizedAlphaParameters::Hht(0.1),
-                 GeneralizedAlphaParameters::FromSpectralRadius(0.6)}) {
+  for (auto p :
+       {GeneralizedAlphaParameters::Newmark(0.25, 0.5), GeneralizedAlphaParameters::Hht(0.1),
+        GeneralizedAlphaParameters::FromSpectralRadius(0.6)}) {
     std::vector<double> errors;
     for (int steps : {200, 400, 800}) {
       const double dt = 1.0 / steps;
       const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(w * w);
       LinearNewmarkIntegrator integrator(m, k, {}, p, dt);
       ASSERT_EQ(integrator.Initialize(Vec(0.0), Vec(0.0), Vec(0.0)), Status::kOk);
-      for (int i = 1; i <= steps; ++i) ASSERT_EQ(integrator.Step(Vec(std::sin(i * dt))), Status::kOk);
+      for (int i = 1; i <= steps; ++i)
+        ASSERT_EQ(integrator.Step(Vec(std::sin(i * dt))), Status::kOk);
       errors.push_back(std::abs(integrator.displacement()[0] - exact));
     }
     EXPECT_NEAR(std::log2(errors[0] / errors[1]), 2.0, 0.1);
@@ -151,7 +157,8 @@ TEST(LinearNewmarkIntegratorTest, CentralDifferenceStabilityLimit) {
     LinearNewmarkIntegrator integrator(beam.model.Mass(0), beam.model.Stiffness(), {},
                                        GeneralizedAlphaParameters::CentralDifference(),
                                        factor * critical);
-    ASSERT_EQ(integrator.Initialize(d0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)), Status::kOk);
+    ASSERT_EQ(integrator.Initialize(d0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)),
+              Status::kOk);
     double largest = 0.0;
     for (int i = 0; i < 5000; ++i) {
       if (integrator.Step(Eigen::VectorXd::Zero(n)) != Status::kOk) break;
@@ -176,7 +183,8 @@ TEST(LinearNewmarkIntegratorTest, ReleaseFollowsModalSuperposition) {
   const BeamModel<2>& model = beam.model;
   const int n = model.FreeDofCount();
   LoadCase loads;
-  loads.points.push_back({test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back(
+      {test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
   const Eigen::VectorXd d0 = BandCholesky(model.Stiffness()).Solve(AssembleLoads(model, loads));
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(model.Stiffness().ToDense(),
                                                                 model.Mass(0).ToDense());
@@ -191,7 +199,8 @@ TEST(LinearNewmarkIntegratorTest, ReleaseFollowsModalSuperposition) {
   }
   LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {},
                                      GeneralizedAlphaParameters::Newmark(0.25, 0.5), dt);
-  ASSERT_EQ(integrator.Initialize(d0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)), Status::kOk);
+  ASSERT_EQ(integrator.Initialize(d0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)),
+            Status::kOk);
   double worst_algorithmic = 0.0, worst_physical = 0.0;
   for (int i = 1; i <= 800; ++i) {
     ASSERT_EQ(integrator.Step(Eigen::VectorXd::Zero(n)), Status::kOk);
@@ -201,7 +210,8 @@ TEST(LinearNewmarkIntegratorTest, ReleaseFollowsModalSuperposition) {
       algorithmic += eig.eigenvectors()(tip, m) * std::cos(omega_bar[m] * i * dt) * modal0[m];
       physical += eig.eigenvectors()(tip, m) * std::cos(omega[m] * t) * modal0[m];
     }
-    worst_algorithmic = std::max(worst_algorithmic, std::abs(integrator.displacement()[tip] - algorithmic));
+    worst_algorithmic =
+        std::max(worst_algorithmic, std::abs(integrator.displacement()[tip] - algorithmic));
     worst_physical = std::max(worst_physical, std::abs(integrator.displacement()[tip] - physical));
   }
   // Round-off over 800 steps of a system with condition number ~1e8.
@@ -213,8 +223,9 @@ TEST(LinearNewmarkIntegratorTest, ReleaseFollowsModalSuperposition) {
 
 TEST(LinearNewmarkIntegratorTest, RejectsANonPositiveTimeStep) {
   const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(1.0);
-  EXPECT_THROW(LinearNewmarkIntegrator(m, k, {}, GeneralizedAlphaParameters::Newmark(0.25, 0.5), 0.0),
-               std::invalid_argument);
+  EXPECT_THROW(
+      LinearNewmarkIntegrator(m, k, {}, GeneralizedAlphaParameters::Newmark(0.25, 0.5), 0.0),
+      std::invalid_argument);
   EXPECT_THROW(GeneralizedAlphaParameters::Newmark(0.6, 0.5), std::invalid_argument);
   EXPECT_THROW(GeneralizedAlphaParameters::Hht(0.5), std::invalid_argument);
 }

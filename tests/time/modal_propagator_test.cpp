@@ -1,7 +1,8 @@
 // Exact modal propagation against closed-form oscillator responses, and the modal model of the
 // reference cantilever against the full semi-discrete system.
-#include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
@@ -62,11 +63,12 @@ TEST(ModalPropagatorTest, SineLoadConvergesAtSecondOrder) {
 }
 
 struct ReferenceBeam {
-  BeamModel<2> model{MakeStructure(StructureKind::kCantilever, test::kReferenceLength, test::Silicon(),
-                                   test::ReferenceSection(), 20, 0)};
+  BeamModel<2> model{MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                   test::Silicon(), test::ReferenceSection(), 20, 0)};
   Eigen::MatrixXd TipForce() const {
     LoadCase loads;
-    loads.points.push_back({test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+    loads.points.push_back(
+        {test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
     return AssembleLoads(model, loads);
   }
   int Tip() const { return model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy); }
@@ -84,7 +86,8 @@ TEST(ModalPropagatorTest, StaticCorrectionRestoresTheTruncatedModesStatically) {
   options.count = 4;
   const ModalModel modal = MakeModalModel(model, SolveModal(model, options), DampingModel{});
   const double period = 2 * kPi / modal.coordinates[0].omega;
-  ModalPropagator p(modal.coordinates, modal.shapes, f, modal.ResidualFlexibility(model, f), period / 7);
+  ModalPropagator p(modal.coordinates, modal.shapes, f, modal.ResidualFlexibility(model, f),
+                    period / 7);
   const int n = model.FreeDofCount();
   p.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Vec(1.0));
 
@@ -98,7 +101,8 @@ TEST(ModalPropagatorTest, StaticCorrectionRestoresTheTruncatedModesStatically) {
     double exact = statics[tip];
     for (int m = 0; m < 4; ++m) {
       const double w = std::sqrt(eig.eigenvalues()[m]);
-      exact -= eig.eigenvectors()(tip, m) * std::cos(w * p.time()) * eig.eigenvectors().col(m).dot(f.col(0)) / (w * w);
+      exact -= eig.eigenvectors()(tip, m) * std::cos(w * p.time()) *
+               eig.eigenvectors().col(m).dot(f.col(0)) / (w * w);
     }
     worst = std::max(worst, std::abs(p.DisplacementAt(tip) - exact));
   }

@@ -1,13 +1,13 @@
 // Steps allocate nothing. This executable interposes malloc, calloc and realloc (forwarding to
 // glibc's own), so every heap allocation counts: Eigen's, operator new's and CHOLMOD's C ones.
 // It is built only without sanitizers, which interpose the allocator themselves.
-#include <cstddef>
-
 #include <gtest/gtest.h>
 
+#include <cstddef>
+
 #include "cosmems/time/linear_newmark_integrator.hpp"
-#include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
 
 extern "C" {
@@ -60,7 +60,8 @@ TEST_P(LinearStepTest, NewmarkStepsAllocateNothing) {
                                      GetParam());
   ASSERT_EQ(integrator.solver_kind(), GetParam());
   const Eigen::VectorXd f = Eigen::VectorXd::Constant(n, 1e-3);
-  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f), Status::kOk);
+  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f),
+            Status::kOk);
   Status status = Status::kOk;
   EXPECT_EQ(AllocationsDuring(100, [&] { status = integrator.Step(f); }), 0);
   EXPECT_EQ(status, Status::kOk);
@@ -74,9 +75,11 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
   const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
                                          test::Silicon(), test::ReferenceSection(), 20, 1));
   LoadCase loads;
-  loads.points.push_back({test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back(
+      {test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
   const Eigen::MatrixXd pattern = AssembleLoads(model, loads);
-  const ModalModel modal = MakeModalModel(model, SolveModal(model), DampingModel::QualityFactor(100));
+  const ModalModel modal =
+      MakeModalModel(model, SolveModal(model), DampingModel::QualityFactor(100));
   ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
                              modal.ResidualFlexibility(model, pattern), 1e-3);
   const int n = model.FreeDofCount();
@@ -84,10 +87,11 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
   propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
   Eigen::VectorXd d(n);
   Status status = Status::kOk;
-  EXPECT_EQ(AllocationsDuring(100, [&] {
-              status = propagator.Step(s);
-              propagator.Displacement(d);
-            }),
+  EXPECT_EQ(AllocationsDuring(100,
+                              [&] {
+                                status = propagator.Step(s);
+                                propagator.Displacement(d);
+                              }),
             0);
   EXPECT_EQ(status, Status::kOk);
 }
@@ -97,7 +101,8 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
 class TipSpring : public NonlinearForce {
  public:
   explicit TipSpring(int dof) : dof_(dof) {}
-  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, SymmetricBandMatrix& tangent) override {
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
+                SymmetricBandMatrix& tangent) override {
     force[dof_] += 1e3 * d[dof_] * d[dof_] * d[dof_];
     tangent.Add(dof_, dof_, 3e3 * d[dof_] * d[dof_]);
     return true;
@@ -116,7 +121,8 @@ TEST(NoAllocationTest, NonlinearStepsAllocateNothing) {
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.8), 0.01);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   f[model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy)] = -1e-3;
-  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f), Status::kOk);
+  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f),
+            Status::kOk);
   Status status = Status::kOk;
   EXPECT_EQ(AllocationsDuring(50, [&] { status = integrator.Step(f); }), 0);
   EXPECT_EQ(status, Status::kOk);

@@ -1,9 +1,10 @@
 // The nonlinear Newton path: a Duffing oscillator against a fine Runge-Kutta reference computed
 // in the test, agreement with the linear path when r(d) = 0, and step cutting.
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
+
 #include <gtest/gtest.h>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
-#include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -13,7 +14,8 @@ namespace {
 class CubicSpring : public NonlinearForce {
  public:
   CubicSpring(int dof, double k3) : dof_(dof), k3_(k3) {}
-  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, SymmetricBandMatrix& tangent) override {
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
+                SymmetricBandMatrix& tangent) override {
     const double x = d[dof_];
     force[dof_] += k3_ * x * x * x;
     tangent.Add(dof_, dof_, 3 * k3_ * x * x);
@@ -27,7 +29,9 @@ class CubicSpring : public NonlinearForce {
 
 class NoForce : public NonlinearForce {
  public:
-  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, SymmetricBandMatrix&) override { return true; }
+  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, SymmetricBandMatrix&) override {
+    return true;
+  }
 };
 
 SymmetricBandMatrix Scalar(double value) {
@@ -56,7 +60,8 @@ double DuffingReference() {
   return y[0];
 }
 
-double Duffing(GeneralizedAlphaParameters p, int steps, NewtonOptions options = {}, int* cuts = nullptr) {
+double Duffing(GeneralizedAlphaParameters p, int steps, NewtonOptions options = {},
+               int* cuts = nullptr) {
   const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(1.0);
   CubicSpring spring(0, 4.0);
   const double dt = 5.0 / steps;
@@ -71,8 +76,9 @@ double Duffing(GeneralizedAlphaParameters p, int steps, NewtonOptions options = 
 
 TEST(NonlinearNewmarkIntegratorTest, DuffingOscillatorConvergesAtSecondOrder) {
   const double reference = DuffingReference();
-  for (auto p : {GeneralizedAlphaParameters::Newmark(0.25, 0.5), GeneralizedAlphaParameters::Hht(0.05),
-                 GeneralizedAlphaParameters::FromSpectralRadius(0.8)}) {
+  for (auto p :
+       {GeneralizedAlphaParameters::Newmark(0.25, 0.5), GeneralizedAlphaParameters::Hht(0.05),
+        GeneralizedAlphaParameters::FromSpectralRadius(0.8)}) {
     const double e1 = std::abs(Duffing(p, 1000) - reference);
     const double e2 = std::abs(Duffing(p, 2000) - reference);
     const double e3 = std::abs(Duffing(p, 4000) - reference);
@@ -97,11 +103,12 @@ TEST(NonlinearNewmarkIntegratorTest, FailedStepsAreCutAndStillConverge) {
 }
 
 TEST(NonlinearNewmarkIntegratorTest, WithoutNonlinearForceItIsTheLinearPath) {
-  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength, test::Silicon(),
-                                         test::ReferenceSection(), 10, 0));
+  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 10, 0));
   const int n = model.FreeDofCount();
   LoadCase loads;
-  loads.points.push_back({test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back(
+      {test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
   const Eigen::VectorXd f = AssembleLoads(model, loads);
   const auto p = GeneralizedAlphaParameters::FromSpectralRadius(0.7);
   const RayleighDamping damping{0.01, 1e-4};
@@ -116,7 +123,8 @@ TEST(NonlinearNewmarkIntegratorTest, WithoutNonlinearForceItIsTheLinearPath) {
     ASSERT_EQ(linear.Step(f), Status::kOk);
   }
   // Newton stops at a relative residual of 1e-10; the two paths agree to that order.
-  EXPECT_LT((nonlinear.displacement() - linear.displacement()).norm(), 1e-9 * linear.displacement().norm());
+  EXPECT_LT((nonlinear.displacement() - linear.displacement()).norm(),
+            1e-9 * linear.displacement().norm());
 }
 
 TEST(NonlinearNewmarkIntegratorTest, AForceOutsideItsDomainFailsTheStepAndKeepsTheState) {
@@ -127,7 +135,8 @@ TEST(NonlinearNewmarkIntegratorTest, AForceOutsideItsDomainFailsTheStepAndKeepsT
     }
   } refusing;
   const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(1.0);
-  NonlinearNewmarkIntegrator integrator(m, k, {}, refusing, GeneralizedAlphaParameters::Newmark(0.25, 0.5), 0.1);
+  NonlinearNewmarkIntegrator integrator(m, k, {}, refusing,
+                                        GeneralizedAlphaParameters::Newmark(0.25, 0.5), 0.1);
   ASSERT_EQ(integrator.Initialize(Vec(0.0), Vec(0.0), Vec(0.0)), Status::kOk);
   Status status = Status::kOk;
   int steps = 0;

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/Core>
 
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/element_interpolation.hpp"
@@ -66,12 +65,12 @@ class BeamField {
       const double axial = std::abs(p.young_modulus * (q[kUx1] - q[kUx0]) / p.length);
       for (double xi : {0.0, 1.0}) {
         const ShapeValues s = ShapeValues::At(model_.bases(), xi);
-        const double ky = Bending(q, s.bending_curvature, kUy0, kRz0, 1.0, p.length) /
-                          (p.length * p.length);
+        const double ky =
+            Bending(q, s.bending_curvature, kUy0, kRz0, 1.0, p.length) / (p.length * p.length);
         double stress = axial + p.young_modulus * std::abs(ky) * p.half_thickness;
         if constexpr (Dim == 3) {
-          const double kz = Bending(q, s.bending_curvature, kUz0, kRy0, -1.0, p.length) /
-                            (p.length * p.length);
+          const double kz =
+              Bending(q, s.bending_curvature, kUz0, kRy0, -1.0, p.length) / (p.length * p.length);
           stress += p.young_modulus * std::abs(kz) * p.half_width;
         }
         most = std::max(most, stress);

@@ -1,12 +1,11 @@
 #pragma once
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "cosmems/analysis/mode_kind.hpp"
 #include "cosmems/beam/beam_model.hpp"
@@ -89,12 +88,12 @@ inline bool SolveProjected(const Eigen::MatrixXd& kr, const std::vector<Eigen::M
 }  // namespace internal
 
 struct ModalOptions {
-  int count = 4;                ///< modes wanted, lowest first
-  double tolerance = 1e-12;     ///< relative change of every wanted eigenvalue between sweeps
+  int count = 4;             ///< modes wanted, lowest first
+  double tolerance = 1e-12;  ///< relative change of every wanted eigenvalue between sweeps
   /// ||K x - sum_j l^(j+1) M_2j x|| <= residual_tolerance * l ||M_0 x|| for every wanted mode:
   /// vectors converge half as fast as eigenvalues, and modal dynamics needs them.
   double residual_tolerance = 1e-10;
-  int max_iterations = 500;     ///< sweeps before giving up with Status::kNotConverged
+  int max_iterations = 500;  ///< sweeps before giving up with Status::kNotConverged
 };
 
 struct Mode {
@@ -174,8 +173,7 @@ Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& choles
     // residual r = K x - sum_j l^(j+1) M_2j x. K x comes from K Y = B (no product with K, so no
     // cancellation for smooth x); a residual, unlike the change of a vector, also settles for
     // repeated eigenvalues, whose vectors may turn freely within their eigenspace.
-    const Eigen::MatrixXd k_ritz =
-        b * r.triangularView<Eigen::Upper>().solve(z.leftCols(p));
+    const Eigen::MatrixXd k_ritz = b * r.triangularView<Eigen::Upper>().solve(z.leftCols(p));
     bool converged = true;
     for (int i = 0; i < p && converged; ++i) {
       converged = std::abs(lambda[i] - previous[i]) <= options.tolerance * std::abs(lambda[i]);
@@ -230,7 +228,8 @@ ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options 
       result.status = Status::kNotConverged;
     }
   } else {
-    result.status = internal::SubspaceIteration(model, cholesky, options, p, q, lambda, x, result.iterations);
+    result.status =
+        internal::SubspaceIteration(model, cholesky, options, p, q, lambda, x, result.iterations);
   }
   for (int i = 0; i < p; ++i) {
     Mode mode;

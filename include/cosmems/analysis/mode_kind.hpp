@@ -1,8 +1,7 @@
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "cosmems/beam/beam_model.hpp"
 

@@ -16,7 +16,8 @@ struct StepTiming {
     if (samples_us.empty()) return t;
     auto at = [&](double q) {
       const auto k = static_cast<std::size_t>(q * static_cast<double>(samples_us.size() - 1));
-      std::nth_element(samples_us.begin(), samples_us.begin() + static_cast<long>(k), samples_us.end());
+      std::nth_element(samples_us.begin(), samples_us.begin() + static_cast<long>(k),
+                       samples_us.end());
       return samples_us[k];
     };
     t.median_us = at(0.5);

@@ -1,12 +1,11 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/analysis/output_point.hpp"
@@ -41,7 +40,7 @@ struct TransientOptions {
   LoadTimeFunction time_function;
   DampingModel damping;
   SpdSolverKind solver = SpdSolverKind::kAuto;
-  double output_x = 0.0;  ///< m: where uy is recorded (the tip or mid-span)
+  double output_x = 0.0;    ///< m: where uy is recorded (the tip or mid-span)
   int max_history = 20000;  ///< samples kept in the history, evenly strided
 
   void Validate() const {
@@ -62,19 +61,17 @@ struct TransientResult {
   Status status = Status::kOk;
   long steps = 0;
   StepTiming step_time;
-  double wall_time_s = 0.0;    ///< set-up and stepping
+  double wall_time_s = 0.0;      ///< set-up and stepping
   double stepping_time_s = 0.0;  ///< the steps alone (their timed sum)
   double simulated_time_s = 0.0;
   double max_abs_output = 0.0;  ///< m: largest |uy| at the output point
   /// m: largest -uy at the output point, its deflection toward the substrate (0 when it never
   /// moves that way)
   double max_toward_substrate = 0.0;
-  std::vector<double> time_s;   ///< history
+  std::vector<double> time_s;  ///< history
   std::vector<double> output_m;
 
-  double RealtimeFactor() const {
-    return wall_time_s > 0.0 ? simulated_time_s / wall_time_s : 0.0;
-  }
+  double RealtimeFactor() const { return wall_time_s > 0.0 ? simulated_time_s / wall_time_s : 0.0; }
 };
 
 /// A linear transient run of `model` under `loads` (one spatial pattern times the time
@@ -104,7 +101,9 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
   }
   LoadTimeFunction time_function = options.time_function;
   if (options.start_static) time_function.kind = LoadTimeFunction::Kind::kZero;
-  auto amplitude = [&](long i) { return time_function.Value(static_cast<double>(i) * options.time_step); };
+  auto amplitude = [&](long i) {
+    return time_function.Value(static_cast<double>(i) * options.time_step);
+  };
 
   const long stride = std::max<long>(1, steps / std::max(1, options.max_history));
   std::vector<double> step_us;
@@ -170,7 +169,8 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
       two.count = 2;
       const ModalResult lowest = SolveModal(model, two);
       const double w1 = 2.0 * kPi * lowest.modes.at(0).frequency_hz;
-      const double w2 = lowest.modes.size() > 1 ? 2.0 * kPi * lowest.modes[1].frequency_hz : 3.0 * w1;
+      const double w2 =
+          lowest.modes.size() > 1 ? 2.0 * kPi * lowest.modes[1].frequency_hz : 3.0 * w1;
       damping = options.damping.ForFullModel(w1, w2, units);
     }
     LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), damping,

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/beam/dof_map.hpp"

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "cosmems/beam/frame_layout.hpp"
 #include "cosmems/beam/support.hpp"
@@ -17,8 +16,7 @@ class DofMap {
   static constexpr int kNodeDofs = FrameLayout<Dim>::kNodeDofs;
 
   DofMap() = default;
-  explicit DofMap(const std::vector<Support>& supports)
-      : index_(supports.size() * kNodeDofs, -1) {
+  explicit DofMap(const std::vector<Support>& supports) : index_(supports.size() * kNodeDofs, -1) {
     for (std::size_t node = 0; node < supports.size(); ++node) {
       for (int d = 0; d < 6; ++d) {
         const int local = FrameLayout<Dim>::kIndex[d];

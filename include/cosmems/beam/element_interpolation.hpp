@@ -1,8 +1,7 @@
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "cosmems/beam/frame_element.hpp"
 
@@ -12,9 +11,9 @@ namespace cosmems {
 /// element: what loads are lumped with and what displacements, slopes and curvatures are
 /// recovered from. Derivatives are with respect to xi; divide by l^k for d^k/dx^k.
 struct ShapeValues {
-  std::array<double, 2> bar{};           ///< linear: u1, u2
-  std::array<double, 2> bar_slope{};     ///< d/dxi
-  std::array<double, 4> bending{};       ///< Hermite: w1, l theta1, w2, l theta2
+  std::array<double, 2> bar{};        ///< linear: u1, u2
+  std::array<double, 2> bar_slope{};  ///< d/dxi
+  std::array<double, 4> bending{};    ///< Hermite: w1, l theta1, w2, l theta2
   std::array<double, 4> bending_slope{};
   std::array<double, 4> bending_curvature{};
 

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 
 #include "cosmems/beam/element_spec.hpp"
 #include "cosmems/beam/frame_layout.hpp"
@@ -12,7 +11,8 @@ namespace cosmems {
 
 /// The power-series bases of one series order, shared by every element of a model.
 struct FrameBases {
-  explicit FrameBases(int order) : bar(FieldKind::kBar, order), bending(FieldKind::kBending, order) {}
+  explicit FrameBases(int order)
+      : bar(FieldKind::kBar, order), bending(FieldKind::kBending, order) {}
   PowerSeriesBasis bar;
   PowerSeriesBasis bending;
   int order() const { return bending.order(); }

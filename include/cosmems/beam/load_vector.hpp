@@ -1,9 +1,8 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <cmath>
 #include <stdexcept>
-
-#include <Eigen/Core>
 
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/element_interpolation.hpp"

@@ -1,10 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "cosmems/beam/polynomial.hpp"
 

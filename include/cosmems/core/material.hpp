@@ -8,9 +8,9 @@ namespace cosmems {
 
 /// An isotropic linear-elastic material.
 struct Material {
-  double young_modulus = 0.0;  ///< E [Pa]
-  double density = 0.0;        ///< rho [kg/m^3]
-  double poisson_ratio = 0.22; ///< nu [-]; enters the shear modulus of torsion
+  double young_modulus = 0.0;   ///< E [Pa]
+  double density = 0.0;         ///< rho [kg/m^3]
+  double poisson_ratio = 0.22;  ///< nu [-]; enters the shear modulus of torsion
 
   /// G = E / (2 (1 + nu)) [Pa].
   double ShearModulus() const { return young_modulus / (2.0 * (1.0 + poisson_ratio)); }

@@ -26,7 +26,8 @@ inline std::string FormatValue(double value) {
 /// Throws std::invalid_argument("FIELD = VALUE: must be positive") unless 0 < value < inf.
 inline void RequirePositive(const std::string& field, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {
-    throw std::invalid_argument(field + " = " + FormatValue(value) + ": must be positive and finite");
+    throw std::invalid_argument(field + " = " + FormatValue(value) +
+                                ": must be positive and finite");
   }
 }
 

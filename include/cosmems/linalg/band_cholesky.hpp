@@ -1,10 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <Eigen/Core>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/linalg/band_kernels.hpp"
@@ -82,7 +81,8 @@ class BandCholesky {
     }
     for (int j = size_ - 1; j >= 0; --j) {  // L^T x = y
       double s = b[j] * inverse_diagonal_[j];
-      for (int k = std::min(bandwidth_, size_ - 1 - j); k >= 1; --k) s -= backward_(k, j) * b[j + k];
+      for (int k = std::min(bandwidth_, size_ - 1 - j); k >= 1; --k)
+        s -= backward_(k, j) * b[j + k];
       b[j] = s;
     }
   }

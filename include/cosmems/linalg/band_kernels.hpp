@@ -53,9 +53,11 @@ void BandCholeskySolve(const double* __restrict forward, const double* __restric
   for (int i = 0; i < n; ++i) {
     double s = b[i] * inverse[i];
     if (i >= W) {
-      for (int k = W; k >= 1; --k) s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
+      for (int k = W; k >= 1; --k)
+        s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
     } else {
-      for (int k = i; k >= 1; --k) s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
+      for (int k = i; k >= 1; --k)
+        s -= forward[static_cast<long>(i - k) * stride + k] * window[k - 1];
     }
     for (int k = W - 1; k >= 1; --k) window[k] = window[k - 1];
     b[i] = window[0] = s;
@@ -79,15 +81,32 @@ void BandCholeskySolve(const double* __restrict forward, const double* __restric
 template <typename F>
 bool DispatchBandwidth(int bandwidth, F&& f) {
   switch (bandwidth) {
-    case 0: f(std::integral_constant<int, 0>{}); return true;
-    case 1: f(std::integral_constant<int, 1>{}); return true;
-    case 2: f(std::integral_constant<int, 2>{}); return true;
-    case 3: f(std::integral_constant<int, 3>{}); return true;
-    case 4: f(std::integral_constant<int, 4>{}); return true;
-    case 5: f(std::integral_constant<int, 5>{}); return true;
-    case 8: f(std::integral_constant<int, 8>{}); return true;
-    case 11: f(std::integral_constant<int, 11>{}); return true;
-    default: return false;
+    case 0:
+      f(std::integral_constant<int, 0>{});
+      return true;
+    case 1:
+      f(std::integral_constant<int, 1>{});
+      return true;
+    case 2:
+      f(std::integral_constant<int, 2>{});
+      return true;
+    case 3:
+      f(std::integral_constant<int, 3>{});
+      return true;
+    case 4:
+      f(std::integral_constant<int, 4>{});
+      return true;
+    case 5:
+      f(std::integral_constant<int, 5>{});
+      return true;
+    case 8:
+      f(std::integral_constant<int, 8>{});
+      return true;
+    case 11:
+      f(std::integral_constant<int, 11>{});
+      return true;
+    default:
+      return false;
   }
 }
 

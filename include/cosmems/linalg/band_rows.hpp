@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "cosmems/linalg/band_kernels.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
@@ -17,10 +16,13 @@ class BandRows {
  public:
   BandRows() = default;
   explicit BandRows(const SymmetricBandMatrix& a)
-      : size_(a.size()), bandwidth_(a.bandwidth()), rows_(static_cast<std::size_t>(a.size()) * Width()) {
+      : size_(a.size()),
+        bandwidth_(a.bandwidth()),
+        rows_(static_cast<std::size_t>(a.size()) * Width()) {
     for (int i = 0; i < size_; ++i) {
       for (int k = -bandwidth_; k <= bandwidth_; ++k) {
-        if (i + k >= 0 && i + k < size_) rows_[static_cast<std::size_t>(i) * Width() + k + bandwidth_] = a(i, i + k);
+        if (i + k >= 0 && i + k < size_)
+          rows_[static_cast<std::size_t>(i) * Width() + k + bandwidth_] = a(i, i + k);
       }
     }
   }
@@ -45,7 +47,8 @@ class BandRows {
     const int width = Width();
     for (int i = 0; i < size_; ++i) {
       double sum = 0.0;
-      for (int k = 0; k < width; ++k) sum += rows_[static_cast<std::size_t>(i) * width + k] * x_padded[i + k];
+      for (int k = 0; k < width; ++k)
+        sum += rows_[static_cast<std::size_t>(i) * width + k] * x_padded[i + k];
       y[i] -= sum;
     }
   }

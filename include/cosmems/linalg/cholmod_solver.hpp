@@ -1,9 +1,8 @@
 #pragma once
 
-#include <memory>
-
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 
 #include "cosmems/core/status.hpp"
 

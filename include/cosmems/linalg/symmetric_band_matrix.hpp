@@ -1,10 +1,9 @@
 #pragma once
 
-#include <algorithm>
-#include <vector>
-
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <algorithm>
+#include <vector>
 
 #include "cosmems/linalg/band_kernels.hpp"
 

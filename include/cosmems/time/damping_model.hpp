@@ -44,7 +44,8 @@ struct DampingModel {
   RayleighDamping ForFullModel(double w1, double w2, const UnitSystem& units) const {
     RayleighDamping si;
     if (kind == Kind::kRayleigh) si = rayleigh;
-    if (kind == Kind::kQualityFactor) si = RayleighDamping::FromQualityFactor(quality_factor, w1, w2);
+    if (kind == Kind::kQualityFactor)
+      si = RayleighDamping::FromQualityFactor(quality_factor, w1, w2);
     return {si.mass * units.time, si.stiffness / units.time};
   }
 };

@@ -9,7 +9,8 @@ namespace cosmems {
 
 /// The generalised-alpha family (Chung & Hulbert 1993), which holds every integrator of the
 /// Newmark family: the balance
-///   M a_(n+1-am) + C v_(n+1-af) + K d_(n+1-af) = f(t_(n+1-af)),  x_(n+1-a) = (1-a) x_(n+1) + a x_n,
+///   M a_(n+1-am) + C v_(n+1-af) + K d_(n+1-af) = f(t_(n+1-af)),  x_(n+1-a) = (1-a) x_(n+1) + a
+///   x_n,
 /// closed by Newmark's updates
 ///   d_(n+1) = d_n + dt v_n + dt^2 ((1/2 - beta) a_n + beta a_(n+1)),
 ///   v_(n+1) = v_n + dt ((1 - gamma) a_n + gamma a_(n+1)).

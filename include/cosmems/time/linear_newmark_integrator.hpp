@@ -1,8 +1,7 @@
 #pragma once
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
@@ -30,7 +29,11 @@ class LinearNewmarkIntegrator {
   LinearNewmarkIntegrator(const SymmetricBandMatrix& mass, const SymmetricBandMatrix& stiffness,
                           RayleighDamping damping, GeneralizedAlphaParameters parameters,
                           double time_step, SpdSolverKind solver = SpdSolverKind::kAuto)
-      : mass_(mass), stiffness_(stiffness), damping_(damping), p_(parameters), dt_(time_step),
+      : mass_(mass),
+        stiffness_(stiffness),
+        damping_(damping),
+        p_(parameters),
+        dt_(time_step),
         coefficients_(MakeCoefficients(parameters, damping, time_step)),
         stiffness_rows_(stiffness),
         pad_(stiffness.bandwidth()) {

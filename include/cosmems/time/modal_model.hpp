@@ -1,8 +1,7 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/beam/beam_model.hpp"

@@ -1,9 +1,8 @@
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
 #include <unsupported/Eigen/MatrixFunctions>
+#include <vector>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
@@ -13,7 +12,7 @@ namespace cosmems {
 /// One mode of a modal model: q'' + 2 zeta w q' + w^2 q = phi^T f, with phi normalised to unit
 /// modal mass.
 struct ModalCoordinate {
-  double omega = 0.0;    ///< rad per internal time unit
+  double omega = 0.0;  ///< rad per internal time unit
   double damping_ratio = 0.0;
 };
 

@@ -1,8 +1,7 @@
 #pragma once
 
-#include <cmath>
-
 #include <Eigen/Core>
+#include <cmath>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
@@ -29,24 +28,32 @@ class NonlinearNewmarkIntegrator {
                              RayleighDamping damping, NonlinearForce& force,
                              GeneralizedAlphaParameters parameters, double time_step,
                              NewtonOptions options = {})
-      : mass_(mass), stiffness_(stiffness), damping_(damping), force_(force), p_(parameters),
-        dt_(time_step), options_(options), tangent_(mass.size(), mass.bandwidth()),
+      : mass_(mass),
+        stiffness_(stiffness),
+        damping_(damping),
+        force_(force),
+        p_(parameters),
+        dt_(time_step),
+        options_(options),
+        tangent_(mass.size(), mass.bandwidth()),
         jacobian_(mass.size(), mass.bandwidth()) {
     RequirePositive("time_step", time_step);
     if (p_.IsExplicit()) {
-      throw std::invalid_argument("beta = 0: the nonlinear path needs an implicit member (beta > 0)");
+      throw std::invalid_argument(
+          "beta = 0: the nonlinear path needs an implicit member (beta > 0)");
     }
     const int n = mass.size();
     factor_.Compute(mass);  // sizes the factor's buffers now, so that no step allocates them
-    for (Eigen::VectorXd* v : {&d_, &v_, &a_, &f_, &d_new_, &v_new_, &a_new_, &d_mid_, &v_mid_,
-                               &residual_, &work_, &r_, &f_target_, &f_start_, &d_save_, &v_save_,
-                               &a_save_}) {
+    for (Eigen::VectorXd* v :
+         {&d_, &v_, &a_, &f_, &d_new_, &v_new_, &a_new_, &d_mid_, &v_mid_, &residual_, &work_, &r_,
+          &f_target_, &f_start_, &d_save_, &v_save_, &a_save_}) {
       v->setZero(n);
     }
   }
 
   /// State at t = 0: a0 solves M a0 = f0 - C v0 - K d0 - r(d0).
-  Status Initialize(const Eigen::VectorXd& d0, const Eigen::VectorXd& v0, const Eigen::VectorXd& f0) {
+  Status Initialize(const Eigen::VectorXd& d0, const Eigen::VectorXd& v0,
+                    const Eigen::VectorXd& f0) {
     d_ = d0;
     v_ = v0;
     f_ = f0;
@@ -139,7 +146,8 @@ class NonlinearNewmarkIntegrator {
       // J = (1-am) ca M + (1-af) gamma/(beta h) C + (1-af)(K + dr/dd).
       const double cm = (1.0 - am) * ca + (1.0 - af) * gamma / (beta * h) * damping_.mass;
       const double ck = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
-      jacobian_.mutable_data() = cm * mass_.data() + ck * stiffness_.data() + (1.0 - af) * tangent_.data();
+      jacobian_.mutable_data() =
+          cm * mass_.data() + ck * stiffness_.data() + (1.0 - af) * tangent_.data();
       factor_.Compute(jacobian_);
       if (factor_.info() != Status::kOk) return factor_.info();
       residual_ = -residual_;

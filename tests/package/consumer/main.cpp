@@ -1,17 +1,16 @@
 // A program outside the cosmems tree: the reference cantilever's tip deflection through the
 // installed headers, with its sparse (CHOLMOD) path so the private link dependency is tested.
 #include <cmath>
-#include <cstdio>
-
 #include <cosmems/cosmems.hpp>
+#include <cstdio>
 
 int main() {
   const cosmems::Material silicon{169e9, 2330.0, 0.22};
   const cosmems::RectangularSection section{20e-6, 2e-6};
   const double length = 200e-6;
   const double force = -1e-7;
-  const cosmems::BeamModel<3> model(cosmems::MakeStructure(cosmems::StructureKind::kCantilever,
-                                                           length, silicon, section, 10, 1));
+  const cosmems::BeamModel<3> model(
+      cosmems::MakeStructure(cosmems::StructureKind::kCantilever, length, silicon, section, 10, 1));
   cosmems::LoadCase loads;
   loads.points.push_back({length, Eigen::Vector3d(0, force, 0), Eigen::Vector3d::Zero()});
   const auto solution = cosmems::SolveStatic(model, loads, cosmems::LinearSolverKind::kCholmod);
