@@ -1,28 +1,16 @@
 // Prints the relative error of the first four bending frequencies of the reference cantilever
-// and bridge (planar model) against the roots of cos x cosh x = -/+1, for meshes of 1 ... 40
+// and bridge (planar model) against the roots of cos x cosh x = -/+1, for meshes of 2 ... 40
 // elements and series orders 0 ... 3: what each term of the power series buys on a mesh.
 #include <cmath>
 #include <cosmems/cosmems.hpp>
 #include <cstdio>
 
-namespace {
-
-// The n-th root of cos x cosh x = sign by Newton from the asymptotic root.
-double FrequencyRoot(int n, double sign) {
-  double x = (sign < 0 ? 2 * n - 1 : 2 * n + 1) * cosmems::kPi / 2;
-  for (int i = 0; i < 50; ++i) {
-    x -= (std::cos(x) * std::cosh(x) - sign) /
-         (-std::sin(x) * std::cosh(x) + std::cos(x) * std::sinh(x));
-  }
-  return x;
-}
-
-}  // namespace
+#include "test_beams.hpp"  // the reference beam and the frequency equation of the tests
 
 int main() {
-  const cosmems::Material silicon{169e9, 2330.0, 0.22};
-  const cosmems::RectangularSection section{20e-6, 2e-6};
-  const double length = 200e-6;
+  const cosmems::Material silicon = cosmems::test::Silicon();
+  const cosmems::RectangularSection section = cosmems::test::ReferenceSection();
+  const double length = cosmems::test::kReferenceLength;
   const double ei = silicon.young_modulus * section.SecondMomentZ();
   const double rho_a = silicon.density * section.Area();
   for (const auto kind : {cosmems::StructureKind::kCantilever, cosmems::StructureKind::kBridge}) {
@@ -39,8 +27,9 @@ int main() {
         const cosmems::ModalResult result = cosmems::SolveModal(model, options);
         std::printf("%9d %6d", elements, order);
         for (std::size_t i = 0; i < result.modes.size(); ++i) {
-          const double x = FrequencyRoot(static_cast<int>(i) + 1, bridge ? 1.0 : -1.0);
-          const double exact = x * x / (2 * cosmems::kPi * length * length) * std::sqrt(ei / rho_a);
+          const double x =
+              cosmems::test::FrequencyRoot(static_cast<int>(i) + 1, bridge ? 1.0 : -1.0);
+          const double exact = cosmems::test::BendingFrequency(x, length, ei, rho_a);
           std::printf(" %10.1e", std::abs(result.modes[i].frequency_hz - exact) / exact);
         }
         std::printf("%s\n", result.status == cosmems::Status::kOk ? "" : "  (not converged)");

@@ -6,26 +6,26 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <chrono>
 #include <vector>
+
+#include "cosmems/analysis/step_timing.hpp"
 
 namespace cosmems::bench {
 
 template <typename Step>
 void RecordStepExtremes(benchmark::State& state, Step&& step) {
-  constexpr int kSamples = 20000;
-  std::vector<double> ns(kSamples);
-  for (double& sample : ns) {
+  std::vector<double> us(20000);
+  for (double& sample : us) {
     const auto start = std::chrono::steady_clock::now();
     step();
     sample =
-        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
   }
-  std::sort(ns.begin(), ns.end());
-  state.counters["p50_ns"] = ns[kSamples / 2];
-  state.counters["p99_ns"] = ns[kSamples * 99 / 100];
-  state.counters["max_ns"] = ns.back();
+  const StepTiming timing = StepTiming::From(std::move(us));
+  state.counters["p50_ns"] = 1e3 * timing.median_us;
+  state.counters["p99_ns"] = 1e3 * timing.p99_us;
+  state.counters["max_ns"] = 1e3 * timing.max_us;
 }
 
 }  // namespace cosmems::bench

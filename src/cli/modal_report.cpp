@@ -7,7 +7,6 @@
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
-#include "ignored_settings.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -30,11 +29,7 @@ Eigen::MatrixXd ShapeAtNodes(const BeamModel<Dim>& model, const Mode& mode) {
 
 template <int Dim>
 std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
-  RunHeader header;
-  header.scene = scene.source;
-  header.analysis = AnalysisType::kModal;
-  header.model = scene.model;
-  header.warnings = IgnoredSettingWarnings(scene);
+  RunHeader header = RunHeader::Start(scene);
   ModalOptions options;
   options.count = scene.analysis.count;
   const auto start = std::chrono::steady_clock::now();

@@ -1,8 +1,27 @@
 #include "run_header.hpp"
 
+#include "ignored_settings.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
+
+RunHeader RunHeader::Start(const Scene& scene) {
+  RunHeader header;
+  header.scene = scene.source;
+  header.analysis = scene.analysis.type;
+  header.model = scene.model;
+  header.warnings = IgnoredSettingWarnings(scene);
+  return header;
+}
+
+void RunHeader::WarnIfThroughSubstrate(const std::string& subject, double distance,
+                                       const std::optional<double>& gap) {
+  if (!gap || distance < *gap) return;
+  warnings.push_back(subject + " " + Scientific(distance) +
+                     " m toward the substrate, at least the gap of " + Significant(*gap) +
+                     " m: it passes through the substrate (contact is not modelled in this "
+                     "version)");
+}
 
 void RunHeader::AddJson(nlohmann::ordered_json& json) const {
   json["scene"] = scene;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,6 +21,15 @@ struct RunHeader {
   int dofs = 0;              ///< free degrees of freedom of the model
   double wall_time_s = 0.0;  ///< model build and solve
   std::vector<std::string> warnings;
+
+  /// The header of a run of `scene`: its name, analysis and model, and the warnings for
+  /// settings its analysis does not use (IgnoredSettingWarnings).
+  static RunHeader Start(const Scene& scene);
+
+  /// Warns that a linear result reaches the substrate: `subject` ("the tip moves", say) went
+  /// `distance` m toward it, at least the `gap`. Contact is not modelled in this version.
+  void WarnIfThroughSubstrate(const std::string& subject, double distance,
+                              const std::optional<double>& gap);
 
   /// scene, analysis, status, model {theory, dimension, elements, series_order, modes, dofs},
   /// wall_time_s.

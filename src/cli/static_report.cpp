@@ -6,7 +6,6 @@
 #include "cosmems/analysis/static_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
-#include "ignored_settings.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -19,11 +18,7 @@ std::vector<double> ToJson(const Eigen::Vector3d& v) {
 
 template <int Dim>
 std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
-  RunHeader header;
-  header.scene = scene.source;
-  header.analysis = AnalysisType::kStatic;
-  header.model = scene.model;
-  header.warnings = IgnoredSettingWarnings(scene);
+  RunHeader header = RunHeader::Start(scene);
   const LoadCase loads = MakeLoadCase(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
@@ -55,12 +50,8 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
     results.nodes(n, 0) = model.NodeX()[n] * model.units().length;
     results.nodes.row(n).tail<6>() = values.row(n);
   }
-  if (results.gap && results.max_deflection >= *results.gap) {
-    header.warnings.push_back(
-        "the linear solution deflects " + Scientific(results.max_deflection) +
-        " m toward the substrate, at least the gap of " + Significant(*results.gap) +
-        " m: it passes through the substrate (contact is not modelled in this version)");
-  }
+  header.WarnIfThroughSubstrate("the linear solution deflects", results.max_deflection,
+                                results.gap);
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
 

@@ -23,10 +23,7 @@ const char* OutputPointName(StructureKind kind) {
 
 template <int Dim>
 std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
-  RunHeader header;
-  header.scene = scene.source;
-  header.analysis = AnalysisType::kTransient;
-  header.model = scene.model;
+  RunHeader header = RunHeader::Start(scene);
   const LoadCase loads = MakeLoadCase(scene);
   const TransientOptions options = MakeTransientOptions(scene);
   const auto start = std::chrono::steady_clock::now();
@@ -62,13 +59,10 @@ std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
   if (loads.points.empty() && loads.distributed.isZero(0.0)) {
     header.warnings.push_back("the loads are all zero: the beam stays at rest");
   }
-  const std::optional<double>& gap = scene.structure.gap;
-  if (result.status == Status::kOk && gap && result.max_toward_substrate >= *gap) {
-    header.warnings.push_back(std::string("the ") + OutputPointName(scene.structure.kind) +
-                              " moves " + Scientific(result.max_toward_substrate) +
-                              " m toward the substrate, at least the gap of " + Significant(*gap) +
-                              " m: it passes through the substrate (contact is not modelled in "
-                              "this version)");
+  if (result.status == Status::kOk) {
+    header.WarnIfThroughSubstrate(
+        std::string("the ") + OutputPointName(scene.structure.kind) + " moves",
+        result.max_toward_substrate, scene.structure.gap);
   }
   return std::make_unique<TransientReport>(std::move(header), std::move(results));
 }

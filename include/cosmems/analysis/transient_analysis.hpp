@@ -149,13 +149,12 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
       return result;
     }
     const ModalModel modal = MakeModalModel(model, modes, options.damping);
-    ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
-                               modal.ResidualFlexibility(model, pattern), dt);
+    const Eigen::MatrixXd residual = modal.ResidualFlexibility(model, pattern);
+    ModalPropagator propagator(modal.coordinates, modal.shapes, pattern, residual, dt);
     Eigen::VectorXd s = Eigen::VectorXd::Constant(1, amplitude(0));
     propagator.Initialize(model.Mass(0) * d0, Eigen::VectorXd::Zero(n), s);
     const Eigen::RowVectorXd output_shapes = output.Evaluate(modal.shapes);
-    const double output_static =
-        output.Evaluate(modal.ResidualFlexibility(model, pattern).col(0).eval());
+    const double output_static = output.Evaluate(residual.col(0).eval());
     run(
         [&](long i) {
           s[0] = amplitude(i);

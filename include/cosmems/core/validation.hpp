@@ -7,20 +7,20 @@
 
 namespace cosmems {
 
-/// Formats a value the way error messages quote it: shortest round-trip form.
+/// Formats a value the way error messages quote it: the fewest significant digits that read
+/// back to the same double (17 always do).
 inline std::string FormatValue(double value) {
-  std::ostringstream out;
-  out.precision(17);
-  out << value;
-  double back = 0.0;
+  std::string text;
   for (int digits = 1; digits <= 17; ++digits) {
     std::ostringstream trial;
     trial.precision(digits);
     trial << value;
-    std::istringstream(trial.str()) >> back;
-    if (back == value) return trial.str();
+    text = trial.str();
+    double back = 0.0;
+    std::istringstream(text) >> back;
+    if (back == value) break;
   }
-  return out.str();
+  return text;
 }
 
 /// Throws std::invalid_argument("FIELD = VALUE: must be positive") unless 0 < value < inf.

@@ -79,7 +79,11 @@ class LinearNewmarkIntegrator {
     v_ = v;
     a_ = a;
     f_ = f;
-    for (Eigen::Index i = 0; i < d_.size(); ++i) PrepareRow(i);
+    const Coefficients& c = coefficients_;
+    for (Eigen::Index i = 0; i < d_.size(); ++i) {
+      x_k_[pad_ + i] = c.Xk(d_[i], v_[i], a_[i]);
+      x_m_[pad_ + i] = c.Xm(v_[i], a_[i]);
+    }
   }
 
   /// Advances by one time step to the load f_next at t + dt. A non-finite result is reported
@@ -111,11 +115,11 @@ class LinearNewmarkIntegrator {
     for (Eigen::Index i = 0; i < n; ++i) {
       d[i] += c.dt * v[i] + c.dd_a * a[i] + c.dd_new * an[i];
       v[i] += c.dv_a * a[i] + c.dv_new * an[i];
-      xk[i] = c.ck * (v[i] + c.vp_a * an[i]) + d[i] + c.dp_v * v[i] + c.dp_a * an[i];
+      xk[i] = c.Xk(d[i], v[i], an[i]);
     }
     if (uses_mass_) {
       double* __restrict xm = x_m_.data() + pad_;
-      for (Eigen::Index i = 0; i < n; ++i) xm[i] = c.am * an[i] + c.cm * (v[i] + c.vp_a * an[i]);
+      for (Eigen::Index i = 0; i < n; ++i) xm[i] = c.Xm(v[i], an[i]);
     }
     if (p_.alpha_f != 0.0) f_ = f_next;
     a_.swap(a_new_);
@@ -137,6 +141,11 @@ class LinearNewmarkIntegrator {
   // x_m = am a + cM vp and x_k = cK vp + dp.
   struct Coefficients {
     double dt, dd_a, dd_new, dv_a, dv_new, vp_a, am, cm, ck, dp_v, dp_a;
+
+    double Xk(double d, double v, double a) const {
+      return ck * (v + vp_a * a) + d + dp_v * v + dp_a * a;
+    }
+    double Xm(double v, double a) const { return am * a + cm * (v + vp_a * a); }
   };
 
   static Coefficients MakeCoefficients(const GeneralizedAlphaParameters& p, RayleighDamping c,
@@ -153,13 +162,6 @@ class LinearNewmarkIntegrator {
             c.stiffness,
             one_af * dt,
             one_af * dt * dt * (0.5 - p.beta)};
-  }
-
-  void PrepareRow(Eigen::Index i) {
-    const Coefficients& c = coefficients_;
-    const double vp = v_[i] + c.vp_a * a_[i];
-    x_m_[pad_ + i] = c.am * a_[i] + c.cm * vp;
-    x_k_[pad_ + i] = c.ck * vp + d_[i] + c.dp_v * v_[i] + c.dp_a * a_[i];
   }
 
   const SymmetricBandMatrix& mass_;
