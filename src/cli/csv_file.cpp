@@ -18,6 +18,15 @@ void CsvFile::Row(const std::vector<std::string>& cells) {
   file_ << '\n';
 }
 
+void CsvFile::Rows(const Eigen::MatrixXd& values, const std::string& first_cell) {
+  for (Eigen::Index r = 0; r < values.rows(); ++r) {
+    std::vector<std::string> cells;
+    if (!first_cell.empty()) cells.push_back(first_cell);
+    for (Eigen::Index c = 0; c < values.cols(); ++c) cells.push_back(Number(values(r, c)));
+    Row(cells);
+  }
+}
+
 void CsvFile::Close() {
   file_.close();
   Check();

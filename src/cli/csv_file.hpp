@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -15,6 +16,8 @@ class CsvFile {
 
   /// One row; cells are written as given, joined by commas.
   void Row(const std::vector<std::string>& cells);
+  /// One row per row of `values`, each number exact (Number()), after `first_cell` if given.
+  void Rows(const Eigen::MatrixXd& values, const std::string& first_cell = "");
   /// Flushes and checks that everything reached the file.
   void Close();
 

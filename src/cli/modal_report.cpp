@@ -5,27 +5,15 @@
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/analysis/nonlinear_static_analysis.hpp"
+#include "cosmems/beam/stretching_force.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
+#include "nodal_shape.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
 namespace {
-
-// Nodal values of a mode shape in SI, scaled to a largest |translation| (or, for torsion,
-// |rotation|) of 1: the mass normalisation of the solver has no meaning on a plot.
-template <int Dim>
-Eigen::MatrixXd ShapeAtNodes(const BeamModel<Dim>& model, const Mode& mode) {
-  const Eigen::MatrixXd values = BeamField<Dim>(model, mode.shape).AtNodes();
-  const double scale = mode.kind == ModeKind::kTorsion ? values.rightCols<3>().cwiseAbs().maxCoeff()
-                                                       : values.leftCols<3>().cwiseAbs().maxCoeff();
-  Eigen::MatrixXd shape(values.rows(), 7);
-  for (Eigen::Index n = 0; n < values.rows(); ++n) {
-    shape(n, 0) = model.NodeX()[n] * model.units().length;
-  }
-  shape.rightCols<6>() = scale > 0.0 ? Eigen::MatrixXd(values / scale) : values;
-  return shape;
-}
 
 template <int Dim>
 std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
@@ -34,7 +22,19 @@ std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
   options.count = scene.analysis.count;
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
-  const ModalResult result = SolveModal(model, options);
+  ModalResult result;
+  if (scene.model.theory == Theory::kStretching) {
+    // About the equilibrium under the scene's loads, where stretching has stiffened the beam.
+    StretchingForce<Dim> force(model);
+    const NonlinearStaticSolution deflected =
+        SolveNonlinearStatic(model, force, MakeLoadCase(scene));
+    result.status = deflected.status;
+    if (deflected.status == Status::kOk) {
+      result = SolveModal(model, ModalPencil::About(model, force, deflected.displacement), options);
+    }
+  } else {
+    result = SolveModal(model, options);
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.status;
@@ -43,7 +43,8 @@ std::unique_ptr<ModalReport> RunModal(const Scene& scene) {
   std::vector<ModeResult> modes;
   if (result.status == Status::kOk) {
     for (const Mode& mode : result.modes) {
-      modes.push_back({mode.frequency_hz, mode.kind, ShapeAtNodes(model, mode)});
+      modes.push_back({mode.frequency_hz, mode.kind,
+                       NodalShape(model, mode.shape, mode.kind == ModeKind::kTorsion)});
     }
     if (static_cast<int>(modes.size()) < scene.analysis.count) {
       header.warnings.push_back("analysis.count = " + std::to_string(scene.analysis.count) +
@@ -86,12 +87,7 @@ void ModalReport::WriteFiles(const std::filesystem::path& directory) const {
   for (std::size_t i = 0; i < modes_.size(); ++i) {
     const std::string number = std::to_string(i + 1);
     summary.Row({number, CsvFile::Number(modes_[i].frequency_hz), ToString(modes_[i].kind)});
-    const Eigen::MatrixXd& shape = modes_[i].shape;
-    for (Eigen::Index n = 0; n < shape.rows(); ++n) {
-      std::vector<std::string> cells = {number};
-      for (Eigen::Index c = 0; c < shape.cols(); ++c) cells.push_back(CsvFile::Number(shape(n, c)));
-      shapes.Row(cells);
-    }
+    shapes.Rows(modes_[i].shape, number);
   }
   summary.Close();
   shapes.Close();

@@ -7,6 +7,7 @@
 #include <new>
 #include <stdexcept>
 
+#include "buckling_report.hpp"
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_loader.hpp"
@@ -46,6 +47,7 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kTransient:
       return internal::TransientReport::Run(scene);
     case AnalysisType::kBuckling:
+      return internal::BucklingReport::Run(scene);
     case AnalysisType::kPullin:
     case AnalysisType::kRelease:
     case AnalysisType::kHaptic:

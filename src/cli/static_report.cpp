@@ -3,7 +3,9 @@
 #include <chrono>
 
 #include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/beam/stretching_force.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
 #include "text_format.hpp"
@@ -22,7 +24,18 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   const LoadCase loads = MakeLoadCase(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
-  const StaticSolution solution = SolveStatic(model, loads);
+  const bool stretching = scene.model.theory == Theory::kStretching;
+  StaticSolution solution;
+  double axial_force = 0.0;  // internal units; uniform along a stretching beam
+  if (stretching) {
+    StretchingForce<Dim> force(model);
+    const NonlinearStaticSolution nonlinear = SolveNonlinearStatic(model, force, loads);
+    solution.status = nonlinear.status;
+    solution.displacement = nonlinear.displacement;
+    axial_force = force.AxialForce(nonlinear.displacement);
+  } else {
+    solution = SolveStatic(model, loads);
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = solution.status;
@@ -43,15 +56,18 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   results.midspan_displacement = field.At(0.5 * length).template head<3>();
   results.max_deflection = field.MaxDeflectionTowardSubstrate();
   results.max_stress_pa = field.MaxStress();
-  results.axial_force_n = field.AxialForce(0);
+  results.axial_force_n = stretching ? axial_force * model.units().force + field.AxialForce(0) -
+                                           scene.structure.axial_load
+                                     : field.AxialForce(0);
   const Eigen::MatrixXd values = field.AtNodes();
   results.nodes.resize(values.rows(), 7);
   for (Eigen::Index n = 0; n < values.rows(); ++n) {
     results.nodes(n, 0) = model.NodeX()[n] * model.units().length;
     results.nodes.row(n).tail<6>() = values.row(n);
   }
-  header.WarnIfThroughSubstrate("the linear solution deflects", results.max_deflection,
-                                results.gap);
+  header.WarnIfThroughSubstrate(
+      stretching ? "the solution deflects" : "the linear solution deflects", results.max_deflection,
+      results.gap);
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
 
@@ -87,13 +103,7 @@ void StaticReport::PrintResults(std::ostream& out) const {
 
 void StaticReport::WriteFiles(const std::filesystem::path& directory) const {
   CsvFile csv(directory / "deflection.csv", "x_m,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
-  for (Eigen::Index n = 0; n < results_.nodes.rows(); ++n) {
-    std::vector<std::string> cells;
-    for (Eigen::Index c = 0; c < results_.nodes.cols(); ++c) {
-      cells.push_back(CsvFile::Number(results_.nodes(n, c)));
-    }
-    csv.Row(cells);
-  }
+  csv.Rows(results_.nodes);
   csv.Close();
 }
 

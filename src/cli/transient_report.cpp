@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <string>
 
 #include "cosmems/analysis/transient_analysis.hpp"
+#include "cosmems/beam/stretching_force.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
 #include "text_format.hpp"
@@ -28,7 +30,10 @@ std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
   const TransientOptions options = MakeTransientOptions(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
-  const TransientResult result = RunTransient(model, loads, options);
+  std::optional<StretchingForce<Dim>> stretching;
+  if (scene.model.theory == Theory::kStretching) stretching.emplace(model);
+  const TransientResult result =
+      RunTransient(model, loads, options, stretching ? &*stretching : nullptr);
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.status;

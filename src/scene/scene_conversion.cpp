@@ -26,9 +26,11 @@ BeamDescription MakeBeamDescription(const Scene& scene) {
   RectangularSection section;
   section.width = scene.structure.width;
   section.thickness = scene.structure.thickness;
-  return MakeStructure(scene.structure.kind, scene.structure.length,
-                       EffectiveMaterial(scene.material), section, scene.model.elements,
-                       scene.model.series_order);
+  BeamDescription beam =
+      MakeStructure(scene.structure.kind, scene.structure.length, EffectiveMaterial(scene.material),
+                    section, scene.model.elements, scene.model.series_order);
+  beam.axial_load = scene.structure.axial_load;
+  return beam;
 }
 
 LoadCase MakeLoadCase(const Scene& scene) {

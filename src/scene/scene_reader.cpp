@@ -333,17 +333,30 @@ void CheckTransient(const TomlFieldReader& r, const Scene& scene) {
       "analysis.initial = \"static\" removes the loads at t = 0, so only \"step\" goes with it");
 }
 
+// Mid-plane stretching needs both ends held axially, and the Newton path of the Newmark family.
+void CheckStretching(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.model.theory != Theory::kStretching) return;
+  r.Require(scene.structure.kind == StructureKind::kBridge, "model.theory",
+            "\"stretching\" needs both ends held axially: structure.kind = \"bridge\"");
+  if (scene.analysis.type != AnalysisType::kTransient) return;
+  r.Require(scene.analysis.integrator != Integrator::kModal &&
+                scene.analysis.integrator != Integrator::kCentralDifference,
+            "analysis.integrator",
+            "model.theory = \"stretching\" is solved by Newton: it needs an implicit Newmark-"
+            "family integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
+}
+
 // What the schema describes but this version cannot simulate is refused, never ignored. Each
 // later feature removes its line here.
 void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
   const std::string unavailable = "not available in this version";
-  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
-            unavailable + " (only \"linear\" is)");
-  r.Require(scene.structure.axial_load == 0.0, "structure.axial_load", unavailable);
+  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
+            unavailable + " (\"linear\" and \"stretching\" are)");
   const AnalysisType type = scene.analysis.type;
   r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-                type == AnalysisType::kTransient,
-            "analysis.type", unavailable + " (available: \"static\", \"modal\", \"transient\")");
+                type == AnalysisType::kTransient || type == AnalysisType::kBuckling,
+            "analysis.type",
+            unavailable + " (available: \"static\", \"modal\", \"buckling\", \"transient\")");
   const SceneEffects& e = scene.effects;
   const std::array<std::pair<const char*, bool>, 5> effects = {
       {{"contact", e.contact && e.contact->enabled},
@@ -375,6 +388,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   scene.device = ReadDevice(r);
   CheckLoads(r, scene);
   CheckTransient(r, scene);
+  CheckStretching(r, scene);
   RefuseUnavailable(r, scene);
   return scene;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <vector>
 
 #include "test_beams.hpp"
 
@@ -99,7 +100,7 @@ TEST(BeamModelTest, AssembledMatricesAreSymmetricAndPositiveDefinite) {
     const Eigen::MatrixXd k = model.Stiffness().ToDense();
     const Eigen::MatrixXd m = model.Mass(0).ToDense();
     EXPECT_EQ(model.FreeDofCount(), kind == StructureKind::kBridge ? 36 : 42);
-    EXPECT_EQ(model.Stiffness().bandwidth(), 11);
+    EXPECT_EQ(model.Stiffness().bandwidth(), 3);  // one bending field: (u, r) at two nodes
     EXPECT_EQ((k - k.transpose()).norm(), 0.0);
     EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(k).info(), Eigen::Success);
     EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(m).info(), Eigen::Success);
@@ -108,6 +109,43 @@ TEST(BeamModelTest, AssembledMatricesAreSymmetricAndPositiveDefinite) {
       EXPECT_EQ((mj - mj.transpose()).norm(), 0.0);
     }
   }
+}
+
+// Field-by-field numbering only permutes the free degrees of freedom: every entry of K and of
+// each M_2j must equal the node-by-node entry of the same pair of nodal dofs, bit for bit, and
+// nothing may fall outside the narrower band.
+template <int Dim>
+void ExpectSameMatricesPermuted(const BeamDescription& beam, int node_band, int field_band) {
+  const BeamModel<Dim> by_field(beam, DofNumbering::kByField);
+  const BeamModel<Dim> by_node(beam, DofNumbering::kByNode);
+  EXPECT_EQ(by_field.Stiffness().bandwidth(), field_band);
+  EXPECT_EQ(by_node.Stiffness().bandwidth(), node_band);
+  ASSERT_EQ(by_field.FreeDofCount(), by_node.FreeDofCount());
+  std::vector<int> field_of_node(by_node.FreeDofCount(), -1);
+  for (int node = 0; node < by_node.NodeCount(); ++node) {
+    for (int d = 0; d < 6; ++d) {
+      const int r = by_node.dofs().Reduced(node, static_cast<NodalDof>(d));
+      if (r >= 0) field_of_node[r] = by_field.dofs().Reduced(node, static_cast<NodalDof>(d));
+    }
+  }
+  for (int term = -1; term <= beam.series_order; ++term) {
+    const Eigen::MatrixXd a = (term < 0 ? by_node.Stiffness() : by_node.Mass(term)).ToDense();
+    const Eigen::MatrixXd b = (term < 0 ? by_field.Stiffness() : by_field.Mass(term)).ToDense();
+    for (int i = 0; i < a.rows(); ++i) {
+      for (int j = 0; j < a.cols(); ++j) {
+        EXPECT_EQ(a(i, j), b(field_of_node[i], field_of_node[j])) << term << " " << i << " " << j;
+      }
+    }
+  }
+}
+
+TEST(BeamModelTest, FieldNumberingPermutesTheNodeNumbering) {
+  BeamDescription beam = UniformBeam(1e-4, test::Silicon(), test::ReferenceSection(), 6, 2);
+  beam.supports.front() = Support::kClamped;
+  beam.supports[3] = Support::kPinned;
+  beam.supports.back() = Support::kGuided;
+  ExpectSameMatricesPermuted<2>(beam, 5, 3);
+  ExpectSameMatricesPermuted<3>(beam, 11, 3);
 }
 
 TEST(BeamModelTest, SupportsRemoveExactlyTheirDegreesOfFreedom) {

@@ -94,6 +94,65 @@ TEST(RunCliTest, BridgeReportsMidspanButNoTip) {
   EXPECT_EQ(json.at("model").at("dofs"), 19 * 6);
 }
 
+// Euler's load of a cantilever, pi^2 EI / (4 L^2); 20 elements are within 2e-7 (h^4).
+TEST(RunCliTest, BucklingReportsEulersLoadAndTheModeFile) {
+  const Scene scene = LoadScene("cantilever");
+  const double l = scene.structure.length;
+  const double euler =
+      kPi * kPi * scene.material.young_modulus * SecondMoment(scene) / (4.0 * l * l);
+  const TempDirectory dir;
+  const nlohmann::json json =
+      RunJson({"cantilever", "--set", "analysis.type=buckling", "--out", dir.path().string()});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_NEAR(json.at("critical_load_n").get<double>(), euler, 1e-6 * euler);
+  EXPECT_NEAR(json.at("critical_stress_pa").get<double>(),
+              euler / (scene.structure.width * scene.structure.thickness), 1e-6 * euler / 4e-11);
+  ExpectContains(json.at("warnings").dump(), "loads does not change a buckling analysis");
+  const std::vector<std::string> lines = ReadLines(dir.path() / "buckling_mode.csv");
+  ASSERT_EQ(lines.size(), 1u + 21u);
+  EXPECT_EQ(lines[0], "x_m,ux,uy,uz,rx,ry,rz");
+}
+
+// Stretching stiffens the pressed bridge (less deflection than the linear beam, tension in the
+// axis); a residual tension raises its frequencies.
+TEST(RunCliTest, StretchingAndAxialLoadReachTheResults) {
+  const std::vector<std::string> hard = {"--set", "loads.midspan_force=[0, -2e-3, 0]", "--set",
+                                         "structure.gap=1e-4"};
+  std::vector<std::string> linear_args = {"microbridge"};
+  linear_args.insert(linear_args.end(), hard.begin(), hard.end());
+  std::vector<std::string> stretching_args = linear_args;
+  stretching_args.insert(stretching_args.end(), {"--set", "model.theory=stretching"});
+  const nlohmann::json linear = RunJson(linear_args);
+  const nlohmann::json stretching = RunJson(stretching_args);
+  EXPECT_EQ(stretching.at("status"), "ok");
+  EXPECT_LT(stretching.at("max_deflection").get<double>(),
+            0.8 * linear.at("max_deflection").get<double>());
+  EXPECT_GT(stretching.at("axial_force_n").get<double>(), 1e-4);
+  EXPECT_EQ(stretching.at("model").at("theory"), "stretching");
+
+  const double f0 = RunJson({"microbridge", "--set", "analysis.type=modal"})
+                        .at("frequencies_hz")[0]
+                        .get<double>();
+  const nlohmann::json tensioned = RunJson(
+      {"microbridge", "--set", "analysis.type=modal", "--set", "structure.axial_load=1e-2"});
+  EXPECT_GT(tensioned.at("frequencies_hz")[0].get<double>(), 1.2 * f0);
+  const nlohmann::json pressed =
+      RunJson({"microbridge", "--set", "analysis.type=modal", "--set", "model.theory=stretching",
+               "--set", "loads.midspan_force=[0, -2e-3, 0]"});
+  EXPECT_GT(pressed.at("frequencies_hz")[0].get<double>(), 1.2 * f0);
+
+  const nlohmann::json transient =
+      RunJson({"microbridge", "--set", "analysis.type=transient", "--set", "analysis.duration=2e-6",
+               "--set", "analysis.time_step=1e-8", "--set", "model.theory=stretching", "--set",
+               "loads.midspan_force=[0, -2e-3, 0]", "--set", "structure.gap=1e-4"});
+  EXPECT_EQ(transient.at("status"), "ok");
+  EXPECT_EQ(transient.at("steps"), 200);
+  // A suddenly applied load overshoots its static deflection, by less than the linear 2x.
+  const double peak = transient.at("midspan_displacement_max").get<double>();
+  EXPECT_GT(peak, stretching.at("max_deflection").get<double>());
+  EXPECT_LT(peak, 2.0 * stretching.at("max_deflection").get<double>());
+}
+
 TEST(RunCliTest, PlanarModelHasThreeDofsPerNode) {
   const nlohmann::json json = RunJson({"cantilever", "--set", "model.dimension=2"});
   EXPECT_EQ(json.at("model").at("dimension"), 2);
@@ -313,8 +372,8 @@ TEST(RunCliTest, SceneErrorsAreOneLineWithExitTwo) {
   EXPECT_EQ(InvalidInput({"run", "cantilever", "--set", "model.elements=0"}),
             "cosmems: --set: model.elements = 0: must be at least 1\n");
   EXPECT_EQ(InvalidInput({"run", "cantilever", "--json", "--set", "model.theory=stretching"}),
-            "cosmems: --set: model.theory = \"stretching\": not available in this version (only "
-            "\"linear\" is)\n");
+            "cosmems: --set: model.theory = \"stretching\": \"stretching\" needs both ends held "
+            "axially: structure.kind = \"bridge\"\n");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "structure.lenght=1e-4"}),
                  "structure.lenght = 1e-04: unknown key");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=pullin"}),

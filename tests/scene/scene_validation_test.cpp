@@ -286,14 +286,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 INSTANTIATE_TEST_SUITE_P(
     NotYetAvailable, SceneValidationTest,
-    ::testing::Values(BadScene{"stretching", With("model.theory", "\"stretching\""),
-                               "model.theory = \"stretching\"", kUnavailable},
-                      BadScene{"cosserat", With("model.theory", "\"cosserat\""),
+    ::testing::Values(BadScene{"cosserat", With("model.theory", "\"cosserat\""),
                                "model.theory = \"cosserat\"", kUnavailable},
-                      BadScene{"axial_load", With("structure.axial_load", "1e-6"),
-                               "structure.axial_load = 1e-06", kUnavailable},
-                      BadScene{"buckling", With("analysis.type", "\"buckling\""),
-                               "analysis.type = \"buckling\"", kUnavailable},
                       BadScene{"pullin", With("analysis.type", "\"pullin\""),
                                "analysis.type = \"pullin\"", kUnavailable},
                       BadScene{"release", With("analysis.type", "\"release\""),
@@ -312,6 +306,35 @@ INSTANTIATE_TEST_SUITE_P(
                                "effects.van_der_waals = { hamaker = 1e-19 }", kUnavailable},
                       BadScene{"device", With("device.backend", "\"scripted\""),
                                "device = { backend = \"scripted\" }", kUnavailable}),
+    CaseName);
+
+SceneText StretchingBridge() {
+  return With("structure.kind", "\"bridge\"")
+      .Remove("loads.tip_force")
+      .Set("model.theory", "\"stretching\"");
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Stretching, SceneValidationTest,
+    ::testing::Values(BadScene{"cantilever", With("model.theory", "\"stretching\""),
+                               "model.theory = \"stretching\"", "needs both ends held axially"},
+                      BadScene{"modal_integrator",
+                               StretchingBridge()
+                                   .Set("analysis.type", "\"transient\"")
+                                   .Set("analysis.duration", "1e-5")
+                                   .Set("analysis.time_step", "1e-7")
+                                   .Set("analysis.integrator", "\"modal\"")
+                                   .Set("model.modes", "2"),
+                               "analysis.integrator = \"modal\"",
+                               "needs an implicit Newmark-family integrator"},
+                      BadScene{"explicit_integrator",
+                               StretchingBridge()
+                                   .Set("analysis.type", "\"transient\"")
+                                   .Set("analysis.duration", "1e-5")
+                                   .Set("analysis.time_step", "1e-7")
+                                   .Set("analysis.integrator", "\"central-difference\""),
+                               "analysis.integrator = \"central-difference\"",
+                               "needs an implicit Newmark-family integrator"}),
     CaseName);
 
 INSTANTIATE_TEST_SUITE_P(

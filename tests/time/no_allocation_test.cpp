@@ -101,10 +101,9 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
 class TipSpring : public NonlinearForce {
  public:
   explicit TipSpring(int dof) : dof_(dof) {}
-  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
-                SymmetricBandMatrix& tangent) override {
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     force[dof_] += 1e3 * d[dof_] * d[dof_] * d[dof_];
-    tangent.Add(dof_, dof_, 3e3 * d[dof_] * d[dof_]);
+    tangent.band().Add(dof_, dof_, 3e3 * d[dof_] * d[dof_]);
     return true;
   }
 

@@ -14,11 +14,10 @@ namespace {
 class CubicSpring : public NonlinearForce {
  public:
   CubicSpring(int dof, double k3) : dof_(dof), k3_(k3) {}
-  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
-                SymmetricBandMatrix& tangent) override {
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     const double x = d[dof_];
     force[dof_] += k3_ * x * x * x;
-    tangent.Add(dof_, dof_, 3 * k3_ * x * x);
+    tangent.band().Add(dof_, dof_, 3 * k3_ * x * x);
     return std::isfinite(x);
   }
 
@@ -29,9 +28,7 @@ class CubicSpring : public NonlinearForce {
 
 class NoForce : public NonlinearForce {
  public:
-  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, SymmetricBandMatrix&) override {
-    return true;
-  }
+  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, ForceTangent&) override { return true; }
 };
 
 SymmetricBandMatrix Scalar(double value) {
@@ -130,7 +127,7 @@ TEST(NonlinearNewmarkIntegratorTest, WithoutNonlinearForceItIsTheLinearPath) {
 TEST(NonlinearNewmarkIntegratorTest, AForceOutsideItsDomainFailsTheStepAndKeepsTheState) {
   class Refusing : public NonlinearForce {
    public:
-    bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd&, SymmetricBandMatrix&) override {
+    bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd&, ForceTangent&) override {
       return d[0] < 0.5;  // e.g. a gap closed beyond its tolerance
     }
   } refusing;

@@ -46,12 +46,12 @@ class BeamField {
     return most;
   }
 
-  /// Axial force N = EA du/dx in element e [N], tension positive.
+  /// Axial force N = N0 + EA du/dx in element e [N], tension positive, the residual N0 included.
   double AxialForce(int e) const {
     const Local q = LocalValues(e);
     const ElementProperties& p = model_.elements()[e].properties();
     const double strain = (q[kUx1] - q[kUx0]) / p.length;
-    return p.young_modulus * p.area * strain * model_.units().force;
+    return (model_.AxialLoad() + p.young_modulus * p.area * strain) * model_.units().force;
   }
 
   /// The largest normal stress [Pa] at the outer fibres: |E du/dx| + E |k_y| t/2 + E |k_z| b/2,

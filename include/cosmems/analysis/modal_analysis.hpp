@@ -9,9 +9,10 @@
 
 #include "cosmems/analysis/mode_kind.hpp"
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/stretching_force.hpp"
 #include "cosmems/core/constants.hpp"
 #include "cosmems/core/status.hpp"
-#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/band_rank_one_cholesky.hpp"
 
 namespace cosmems {
 
@@ -112,16 +113,58 @@ struct ModalResult {
   int iterations = 0;
 };
 
+/// The matrices of a modal problem, D(w) = K - sum_j w^(2j+2) M_j, with K a band plus an optional
+/// rank-one part s u u^T (internal units).
+struct ModalPencil {
+  SymmetricBandMatrix stiffness;
+  double rank_one_scale = 0.0;
+  Eigen::VectorXd rank_one;
+  std::vector<SymmetricBandMatrix> mass;
+
+  /// About the straight beam: the model's (prestressed) stiffness and mass terms.
+  template <int Dim>
+  static ModalPencil Straight(const BeamModel<Dim>& model) {
+    ModalPencil pencil{model.Stiffness(), 0.0, Eigen::VectorXd::Zero(model.FreeDofCount()), {}};
+    for (int j = 0; j <= model.SeriesOrder(); ++j) pencil.mass.push_back(model.Mass(j));
+    return pencil;
+  }
+
+  /// About a deflected equilibrium d of a stretching beam: the force's tangent joins the
+  /// stiffness, and the axial force it adds to the model's own enters the frequency terms as
+  /// -N G_(j+1).
+  template <int Dim>
+  static ModalPencil About(const BeamModel<Dim>& model, StretchingForce<Dim>& force,
+                           const Eigen::VectorXd& d) {
+    const int n = model.FreeDofCount();
+    ForceTangent tangent(n, model.Stiffness().bandwidth());
+    tangent.Clear();
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+    force.Evaluate(d, r, tangent);
+    const double extra = force.AxialForce(d) - model.AxialLoad();
+    ModalPencil pencil = Straight(model);
+    pencil.stiffness.mutable_data() += tangent.band().data();
+    pencil.rank_one_scale = tangent.rank_one_scale();
+    pencil.rank_one = tangent.rank_one_vector();
+    for (int j = 0; j < model.SeriesOrder(); ++j) {
+      pencil.mass[j].mutable_data() -= extra * model.Geometric(j + 1).data();
+    }
+    return pencil;
+  }
+
+  Eigen::MatrixXd DenseStiffness() const {
+    return stiffness.ToDense() + rank_one_scale * rank_one * rank_one.transpose();
+  }
+};
+
 namespace internal {
 
 /// The sweeps of SolveModal for q < n / 2 vectors; returns the status and fills the Ritz
 /// values `lambda`, vectors `x` (n x q) and the sweep count.
-template <int Dim>
-Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& cholesky,
-                         const ModalOptions& options, int p, int q, Eigen::VectorXd& lambda,
-                         Eigen::MatrixXd& x, int& iterations) {
-  const int n = model.FreeDofCount();
-  const int order = model.SeriesOrder();
+inline Status SubspaceIteration(const ModalPencil& pencil, const BandRankOneCholesky& cholesky,
+                                const ModalOptions& options, int p, int q, Eigen::VectorXd& lambda,
+                                Eigen::MatrixXd& x, int& iterations) {
+  const int n = pencil.stiffness.size();
+  const int order = static_cast<int>(pencil.mass.size()) - 1;
   std::mt19937 random(20261121u);  // fixed seed: reproducible runs
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   x = Eigen::MatrixXd::NullaryExpr(n, q, [&]() { return uniform(random); });
@@ -138,7 +181,7 @@ Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& choles
       b_i.setZero();
       double power = 1.0;
       for (int j = 0; j <= order; ++j, power *= lambda[i]) {
-        model.Mass(j).Multiply(x.col(i), tmp);
+        pencil.mass[j].Multiply(x.col(i), tmp);
         b_i += power * tmp;
       }
       rhs = b_i;
@@ -159,7 +202,7 @@ Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& choles
     for (int j = 0; j <= order; ++j) {
       for (int i = 0; i < q; ++i) {
         auto out = my.col(i);
-        model.Mass(j).Multiply(y.col(i), out);
+        pencil.mass[j].Multiply(y.col(i), out);
       }
       mr.push_back(y.transpose() * my);
       mr.back() = 0.5 * (mr.back() + mr.back().transpose()).eval();
@@ -180,7 +223,7 @@ Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& choles
       residual = k_ritz.col(i);
       double power = lambda[i];
       for (int j = 0; j <= order; ++j, power *= lambda[i]) {
-        model.Mass(j).Multiply(x.col(i), tmp);
+        pencil.mass[j].Multiply(x.col(i), tmp);
         if (j == 0) inertia = std::abs(power) * tmp.norm();
         residual -= power * tmp;
       }
@@ -204,16 +247,16 @@ Status SubspaceIteration(const BeamModel<Dim>& model, const BandCholesky& choles
 /// projects onto the swept basis and solves the small projected problem (internal::SolveProjected).
 /// Mode i converges as l_i / l_(q+1) per sweep with q = max(2p, p + 8) vectors.
 template <int Dim>
-ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options = {}) {
+ModalResult SolveModal(const BeamModel<Dim>& model, const ModalPencil& pencil,
+                       const ModalOptions& options = {}) {
   ModalResult result;
   const int n = model.FreeDofCount();
   const int p = std::min(options.count, n);
   const int q = std::min(n, std::max(2 * p, p + 8));
-  const int order = model.SeriesOrder();
   if (p <= 0) return result;
 
-  const BandCholesky cholesky(model.Stiffness());
-  result.status = cholesky.info();
+  BandRankOneCholesky cholesky;
+  result.status = cholesky.Compute(pencil.stiffness, pencil.rank_one_scale, pencil.rank_one);
   if (result.status != Status::kOk) return result;
 
   Eigen::MatrixXd x;
@@ -222,19 +265,19 @@ ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options 
     // The subspace would span half the space or more: solve the whole problem densely (n is
     // at most a few dozen here), where subspace iteration would only lose the upper modes.
     std::vector<Eigen::MatrixXd> dense;
-    for (int j = 0; j <= order; ++j) dense.push_back(model.Mass(j).ToDense());
+    for (const SymmetricBandMatrix& m : pencil.mass) dense.push_back(m.ToDense());
     result.iterations = 1;
-    if (!internal::SolveProjected(model.Stiffness().ToDense(), dense, p, lambda, x)) {
+    if (!internal::SolveProjected(pencil.DenseStiffness(), dense, p, lambda, x)) {
       result.status = Status::kNotConverged;
     }
   } else {
     result.status =
-        internal::SubspaceIteration(model, cholesky, options, p, q, lambda, x, result.iterations);
+        internal::SubspaceIteration(pencil, cholesky, options, p, q, lambda, x, result.iterations);
   }
   for (int i = 0; i < p; ++i) {
     Mode mode;
     Eigen::VectorXd shape = x.col(i);
-    shape /= std::sqrt(shape.dot(model.Mass(0) * shape));
+    shape /= std::sqrt(shape.dot(pencil.mass[0] * shape));
     Eigen::Index largest = 0;
     shape.cwiseAbs().maxCoeff(&largest);
     if (shape[largest] < 0.0) shape = -shape;
@@ -245,6 +288,12 @@ ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options 
     result.modes.push_back(std::move(mode));
   }
   return result;
+}
+
+/// The modes about the straight (prestressed) beam.
+template <int Dim>
+ModalResult SolveModal(const BeamModel<Dim>& model, const ModalOptions& options = {}) {
+  return SolveModal(model, ModalPencil::Straight(model), options);
 }
 
 }  // namespace cosmems

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/output_point.hpp"
 #include "cosmems/analysis/step_timing.hpp"
 #include "cosmems/beam/beam_model.hpp"
@@ -19,6 +20,7 @@
 #include "cosmems/time/load_time_function.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/modal_propagator.hpp"
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
 
 namespace cosmems {
 
@@ -74,12 +76,19 @@ struct TransientResult {
   double RealtimeFactor() const { return wall_time_s > 0.0 ? simulated_time_s / wall_time_s : 0.0; }
 };
 
-/// A linear transient run of `model` under `loads` (one spatial pattern times the time
-/// function), by the full-order Newmark family or by exact modal propagation.
+/// A transient run of `model` under `loads` (one spatial pattern times the time function), by
+/// the full-order Newmark family or by exact modal propagation. With a nonlinear `force`
+/// (stretching, say) the Newmark family takes its Newton path and a static start solves the
+/// nonlinear statics; the modal path is linear and refuses one (std::invalid_argument).
 template <int Dim>
 TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
-                             const TransientOptions& options) {
+                             const TransientOptions& options, NonlinearForce* force = nullptr) {
   options.Validate();
+  if (force && options.path == TimePath::kModal) {
+    throw std::invalid_argument(
+        "analysis.integrator = \"modal\": modal propagation is linear; a nonlinear theory "
+        "needs a Newmark-family integrator");
+  }
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   TransientResult result;
@@ -91,7 +100,14 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
   const OutputPoint output = OutputPoint::DeflectionAt(model, options.output_x);
 
   Eigen::VectorXd d0 = Eigen::VectorXd::Zero(n);
-  if (options.start_static) {
+  if (options.start_static && force) {
+    const NonlinearStaticSolution deflected = SolveNonlinearStatic(model, *force, loads);
+    if (deflected.status != Status::kOk) {
+      result.status = deflected.status;
+      return result;
+    }
+    d0 = deflected.displacement;
+  } else if (options.start_static) {
     const BandCholesky stiffness(model.Stiffness());
     if (stiffness.info() != Status::kOk) {
       result.status = stiffness.info();
@@ -172,17 +188,30 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
           lowest.modes.size() > 1 ? 2.0 * kPi * lowest.modes[1].frequency_hz : 3.0 * w1;
       damping = options.damping.ForFullModel(w1, w2, units);
     }
-    LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), damping,
-                                       options.parameters, dt, options.solver);
-    Eigen::VectorXd f = pattern * amplitude(0);
-    result.status = integrator.Initialize(d0, Eigen::VectorXd::Zero(n), f);
-    if (result.status != Status::kOk) return result;
-    run(
-        [&](long i) {
-          f = pattern * amplitude(i);
-          return integrator.Step(f);
-        },
-        [&] { return output.Evaluate(integrator.displacement()); });
+    // Returns false when the integrator could not start (the status says why).
+    auto march = [&](auto& integrator) {
+      Eigen::VectorXd f = pattern * amplitude(0);
+      result.status = integrator.Initialize(d0, Eigen::VectorXd::Zero(n), f);
+      if (result.status != Status::kOk) return false;
+      run(
+          [&](long i) {
+            f = pattern * amplitude(i);
+            return integrator.Step(f);
+          },
+          [&] { return output.Evaluate(integrator.displacement()); });
+      return true;
+    };
+    bool started = false;
+    if (force) {
+      NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), damping, *force,
+                                            options.parameters, dt);
+      started = march(integrator);
+    } else {
+      LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), damping,
+                                         options.parameters, dt, options.solver);
+      started = march(integrator);
+    }
+    if (!started) return result;
   }
   for (const double us : step_us) result.stepping_time_s += 1e-6 * us;
   result.step_time = StepTiming::From(std::move(step_us));

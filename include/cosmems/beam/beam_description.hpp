@@ -15,6 +15,9 @@ struct BeamDescription {
   std::vector<ElementSpec> elements;
   std::vector<Support> supports;  ///< one per node: elements.size() + 1
   int series_order = 1;           ///< power-series terms: 0 = Hermite + consistent mass
+  /// N, the residual axial force in the straight beam (tension > 0), e.g. from fabrication
+  /// stress: it enters every analysis through the geometric stiffness.
+  double axial_load = 0.0;
 
   int NodeCount() const { return static_cast<int>(elements.size()) + 1; }
 
@@ -34,6 +37,7 @@ struct BeamDescription {
                                   " given, one per node (" + std::to_string(NodeCount()) +
                                   ") needed");
     }
+    RequireFinite("structure.axial_load", axial_load);
     if (series_order < 0) {
       throw std::invalid_argument("model.series_order = " + std::to_string(series_order) +
                                   ": must be >= 0");

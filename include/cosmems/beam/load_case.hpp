@@ -16,6 +16,8 @@ struct PointLoad {
 struct LoadCase {
   std::vector<PointLoad> points;
   Eigen::Vector3d distributed = Eigen::Vector3d::Zero();  ///< N/m, uniform over the whole length
+
+  bool Empty() const { return points.empty() && distributed.isZero(0.0); }
 };
 
 }  // namespace cosmems

@@ -27,6 +27,10 @@ enum class FieldKind {
 /// where the coefficient of w^(2j+2) follows from integrating the cross terms by parts: every
 /// other product cancels, leaving -(rho A) int N_j N_0 (symmetric, since int N_a N_b depends on
 /// a + b only). `Stiffness()` and `Mass(j)` return the nondimensional K-hat and M-hat_j.
+///
+/// An axial force N adds N int N'^T N' dxi to D(w) (the geometric stiffness K_NL), which expands
+/// the same way: its coefficient of w^(2j) is G-hat_j = sum_(a+b=j) int n_a' n_b' dxi, complete
+/// for j <= order. `Geometric(j)` returns G-hat_j.
 class PowerSeriesBasis {
  public:
   PowerSeriesBasis(FieldKind kind, int order) : kind_(kind), order_(order) {
@@ -52,6 +56,18 @@ class PowerSeriesBasis {
       }
       mass_.push_back(0.5 * (m + m.transpose()));  // symmetric in exact arithmetic
     }
+    for (int j = 0; j <= order; ++j) {
+      Eigen::MatrixXd g = Eigen::MatrixXd::Zero(n, n);
+      for (int r = 0; r <= j; ++r) {
+        for (int a = 0; a < n; ++a) {
+          for (int b = 0; b < n; ++b) {
+            g(a, b) += internal::InnerProduct(internal::Derivative(shapes_[r][a]),
+                                              internal::Derivative(shapes_[j - r][b]));
+          }
+        }
+      }
+      geometric_.push_back(0.5 * (g + g.transpose()));
+    }
   }
 
   FieldKind kind() const { return kind_; }
@@ -64,6 +80,8 @@ class PowerSeriesBasis {
   const Eigen::MatrixXd& Stiffness() const { return stiffness_; }
   /// M-hat_j = int n_j n_0 dxi, the coefficient of w^(2j+2) in -D (nondimensional).
   const Eigen::MatrixXd& Mass(int j) const { return mass_.at(j); }
+  /// G-hat_j = sum_(a+b=j) int n_a' n_b' dxi, the coefficient of N w^(2j) in D (nondimensional).
+  const Eigen::MatrixXd& Geometric(int j) const { return geometric_.at(j); }
 
  private:
   using Shapes = std::vector<internal::Polynomial>;
@@ -112,6 +130,7 @@ class PowerSeriesBasis {
   std::vector<Shapes> shapes_;
   Eigen::MatrixXd stiffness_;
   std::vector<Eigen::MatrixXd> mass_;
+  std::vector<Eigen::MatrixXd> geometric_;
 };
 
 }  // namespace cosmems

@@ -3,14 +3,14 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "cosmems/core/nonlinear_force.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
-#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
 #include "cosmems/time/newton_options.hpp"
-#include "cosmems/time/nonlinear_force.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
 
 namespace cosmems {
@@ -43,7 +43,8 @@ class NonlinearNewmarkIntegrator {
           "beta = 0: the nonlinear path needs an implicit member (beta > 0)");
     }
     const int n = mass.size();
-    factor_.Compute(mass);  // sizes the factor's buffers now, so that no step allocates them
+    // Sizes the factor's buffers now (rank-one part included), so that no step allocates them.
+    (void)factor_.Compute(mass, 1.0, Eigen::VectorXd::Zero(n));
     for (Eigen::VectorXd* v :
          {&d_, &v_, &a_, &f_, &d_new_, &v_new_, &a_new_, &d_mid_, &v_mid_, &residual_, &work_, &r_,
           &f_target_, &f_start_, &d_save_, &v_save_, &a_save_}) {
@@ -59,7 +60,7 @@ class NonlinearNewmarkIntegrator {
     f_ = f0;
     time_ = 0.0;
     r_.setZero();
-    tangent_.mutable_data().setZero();
+    tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
     return InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0 - r_, a_);
   }
@@ -123,7 +124,7 @@ class NonlinearNewmarkIntegrator {
       d_mid_ = (1.0 - af) * d_new_ + af * d_;
       v_mid_ = (1.0 - af) * v_new_ + af * v_;
       r_.setZero();
-      tangent_.mutable_data().setZero();
+      tangent_.Clear();
       if (!force_.Evaluate(d_mid_, r_, tangent_)) return Status::kNonFinite;
       // R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for the scale.
       work_ = (1.0 - am) * a_new_ + am * a_;
@@ -147,9 +148,10 @@ class NonlinearNewmarkIntegrator {
       const double cm = (1.0 - am) * ca + (1.0 - af) * gamma / (beta * h) * damping_.mass;
       const double ck = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
       jacobian_.mutable_data() =
-          cm * mass_.data() + ck * stiffness_.data() + (1.0 - af) * tangent_.data();
-      factor_.Compute(jacobian_);
-      if (factor_.info() != Status::kOk) return factor_.info();
+          cm * mass_.data() + ck * stiffness_.data() + (1.0 - af) * tangent_.band().data();
+      const Status factored = factor_.Compute(jacobian_, (1.0 - af) * tangent_.rank_one_scale(),
+                                              tangent_.rank_one_vector());
+      if (factored != Status::kOk) return factored;
       residual_ = -residual_;
       factor_.SolveInPlace(residual_);
       d_new_ += residual_;
@@ -180,8 +182,9 @@ class NonlinearNewmarkIntegrator {
   double time_ = 0.0;
   int last_iterations_ = 0;
   int last_cuts_ = 0;
-  SymmetricBandMatrix tangent_, jacobian_;
-  BandCholesky factor_;
+  ForceTangent tangent_;
+  SymmetricBandMatrix jacobian_;
+  BandRankOneCholesky factor_;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
       f_target_, f_start_, d_save_, v_save_, a_save_;
 };

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "cosmems/linalg/symmetric_band_matrix.hpp"
+
+namespace cosmems {
+
+/// dr/dd of a NonlinearForce: a part in the structure's band pattern plus at most one symmetric
+/// rank-one part s u u^T. Mid-plane stretching needs the latter: its axial force depends on the
+/// slope everywhere, so its tangent couples every pair of degrees of freedom, which a band
+/// cannot hold but a rank-one term carries exactly (and Sherman-Morrison solves cheaply).
+class ForceTangent {
+ public:
+  ForceTangent() = default;
+  ForceTangent(int size, int bandwidth)
+      : band_(size, bandwidth), rank_one_(Eigen::VectorXd::Zero(size)) {}
+
+  /// Zeroes both parts; allocates nothing.
+  void Clear() {
+    band_.mutable_data().setZero();
+    scale_ = 0.0;
+  }
+
+  SymmetricBandMatrix& band() { return band_; }
+  const SymmetricBandMatrix& band() const { return band_; }
+
+  /// Sets the rank-one part to scale u u^T (u of the structure's size; allocates nothing).
+  void SetRankOne(double scale, const Eigen::VectorXd& u) {
+    scale_ = scale;
+    rank_one_ = u;
+  }
+  double rank_one_scale() const { return scale_; }
+  const Eigen::VectorXd& rank_one_vector() const { return rank_one_; }
+
+  /// The whole tangent as a dense matrix (tests, small modal problems).
+  Eigen::MatrixXd ToDense() const {
+    Eigen::MatrixXd out = band_.ToDense();
+    if (scale_ != 0.0) out += scale_ * rank_one_ * rank_one_.transpose();
+    return out;
+  }
+
+ private:
+  SymmetricBandMatrix band_;
+  Eigen::VectorXd rank_one_;
+  double scale_ = 0.0;
+};
+
+/// A displacement-dependent internal force r(d) with its consistent tangent dr/dd, added to a
+/// linear structure: M a + C v + K d + r(d) = f. Geometric stiffening, stretching, contact and
+/// surface forces implement it. Evaluate() runs inside Newton iterations: it must allocate
+/// nothing, and it reports a state outside its domain by returning false (the step is then cut).
+class NonlinearForce {
+ public:
+  virtual ~NonlinearForce() = default;
+
+  /// Adds r(d) to `force` and dr/dd to `tangent` (the structure's band pattern, plus a rank-one
+  /// part if the force needs one), both in the model's internal units.
+  virtual bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
+                        ForceTangent& tangent) = 0;
+};
+
+}  // namespace cosmems
