@@ -26,13 +26,13 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   const BeamModel<Dim> model(MakeBeamDescription(scene));
   const bool stretching = scene.model.theory == Theory::kStretching;
   StaticSolution solution;
-  double axial_force = 0.0;  // internal units; uniform along a stretching beam
+  double stretched = 0.0;  // N - N0 of a stretching beam, uniform along it (internal units)
   if (stretching) {
     StretchingForce<Dim> force(model);
     const NonlinearStaticSolution nonlinear = SolveNonlinearStatic(model, force, loads);
     solution.status = nonlinear.status;
     solution.displacement = nonlinear.displacement;
-    axial_force = force.AxialForce(nonlinear.displacement);
+    stretched = force.AxialForce(nonlinear.displacement) - model.AxialLoad();
   } else {
     solution = SolveStatic(model, loads);
   }
@@ -56,9 +56,7 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   results.midspan_displacement = field.At(0.5 * length).template head<3>();
   results.max_deflection = field.MaxDeflectionTowardSubstrate();
   results.max_stress_pa = field.MaxStress();
-  results.axial_force_n = stretching ? axial_force * model.units().force + field.AxialForce(0) -
-                                           scene.structure.axial_load
-                                     : field.AxialForce(0);
+  results.axial_force_n = field.AxialForce(0) + stretched * model.units().force;
   const Eigen::MatrixXd values = field.AtNodes();
   results.nodes.resize(values.rows(), 7);
   for (Eigen::Index n = 0; n < values.rows(); ++n) {

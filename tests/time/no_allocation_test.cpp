@@ -1,52 +1,21 @@
-// Steps allocate nothing. This executable interposes malloc, calloc and realloc (forwarding to
-// glibc's own), so every heap allocation counts: Eigen's, operator new's and CHOLMOD's C ones.
-// It is built only without sanitizers, which interpose the allocator themselves.
+// Steps allocate nothing, counted by allocation_counter.cpp, which interposes malloc for this
+// executable (built only without sanitizers).
 #include <gtest/gtest.h>
 
-#include <cstddef>
-
+#include "allocation_counter.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
 
-extern "C" {
-void* __libc_malloc(std::size_t size);
-void* __libc_calloc(std::size_t count, std::size_t size);
-void* __libc_realloc(void* pointer, std::size_t size);
-
-static thread_local long g_allocations = 0;
-
-void* malloc(std::size_t size) {
-  ++g_allocations;
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t count, std::size_t size) {
-  ++g_allocations;
-  return __libc_calloc(count, size);
-}
-void* realloc(void* pointer, std::size_t size) {
-  ++g_allocations;
-  return __libc_realloc(pointer, size);
-}
-}
-
 namespace cosmems {
 namespace {
 
-// Runs `steps` calls of `step` and returns the heap allocations they made.
-template <typename F>
-long AllocationsDuring(int steps, F&& step) {
-  const long before = g_allocations;
-  for (int i = 0; i < steps; ++i) step();
-  return g_allocations - before;
-}
-
 TEST(NoAllocationTest, CounterSeesAllocations) {
-  const long before = g_allocations;
+  const long before = test::AllocationCount();
   Eigen::VectorXd v(100);
   v.setZero();
-  EXPECT_GT(g_allocations, before);
+  EXPECT_GT(test::AllocationCount(), before);
 }
 
 class LinearStepTest : public ::testing::TestWithParam<SpdSolverKind> {};
@@ -63,7 +32,7 @@ TEST_P(LinearStepTest, NewmarkStepsAllocateNothing) {
   ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f),
             Status::kOk);
   Status status = Status::kOk;
-  EXPECT_EQ(AllocationsDuring(100, [&] { status = integrator.Step(f); }), 0);
+  EXPECT_EQ(test::AllocationsDuring(100, [&] { status = integrator.Step(f); }), 0);
   EXPECT_EQ(status, Status::kOk);
 }
 
@@ -87,11 +56,11 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
   propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
   Eigen::VectorXd d(n);
   Status status = Status::kOk;
-  EXPECT_EQ(AllocationsDuring(100,
-                              [&] {
-                                status = propagator.Step(s);
-                                propagator.Displacement(d);
-                              }),
+  EXPECT_EQ(test::AllocationsDuring(100,
+                                    [&] {
+                                      status = propagator.Step(s);
+                                      propagator.Displacement(d);
+                                    }),
             0);
   EXPECT_EQ(status, Status::kOk);
 }
@@ -123,7 +92,7 @@ TEST(NoAllocationTest, NonlinearStepsAllocateNothing) {
   ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f),
             Status::kOk);
   Status status = Status::kOk;
-  EXPECT_EQ(AllocationsDuring(50, [&] { status = integrator.Step(f); }), 0);
+  EXPECT_EQ(test::AllocationsDuring(50, [&] { status = integrator.Step(f); }), 0);
   EXPECT_EQ(status, Status::kOk);
   EXPECT_GT(integrator.last_iterations(), 1);  // Newton really iterated
 }

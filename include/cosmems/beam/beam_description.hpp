@@ -26,6 +26,15 @@ struct BeamDescription {
                            [](double sum, const ElementSpec& e) { return sum + e.length; });
   }
 
+  /// The internal units of a model of this beam: the whole length, the first element's E I_z
+  /// and rho A (UnitSystem::ForBeam).
+  UnitSystem InternalUnits() const {
+    const ElementSpec& first = elements.front();
+    return UnitSystem::ForBeam(Length(),
+                               first.material.young_modulus * first.section.SecondMomentZ(),
+                               first.material.density * first.section.Area());
+  }
+
   /// Throws std::invalid_argument naming the offending field and value.
   void Validate() const {
     if (elements.empty()) throw std::invalid_argument("model.elements = 0: must be at least 1");

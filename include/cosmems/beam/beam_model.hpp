@@ -31,7 +31,7 @@ class BeamModel {
   explicit BeamModel(const BeamDescription& description,
                      DofNumbering numbering = DofNumbering::kByField)
       : description_((description.Validate(), description)),
-        units_(UnitsFor(description)),
+        units_(description.InternalUnits()),
         bases_(description.series_order),
         dofs_(description.supports, numbering) {
     double x = 0.0;
@@ -103,14 +103,6 @@ class BeamModel {
   }
 
  private:
-  // Units from the first element: the whole beam's length, that element's E I_z and rho A.
-  static UnitSystem UnitsFor(const BeamDescription& d) {
-    const ElementSpec& first = d.elements.front();
-    return UnitSystem::ForBeam(d.Length(),
-                               first.material.young_modulus * first.section.SecondMomentZ(),
-                               first.material.density * first.section.Area());
-  }
-
   // Whether the numbering lets local dofs a and b of an element couple: any two node by node,
   // two of the same field field by field.
   bool MayCouple(int a, int b) const {
