@@ -27,15 +27,18 @@ void BM_StretchingNewmarkStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  long iterations = 0, steps = 0;
+  long iterations = 0, factorizations = 0, steps = 0;
   auto step = [&] {
     const Status status = integrator.Step(f);
     benchmark::DoNotOptimize(status);
     iterations += integrator.last_iterations();
+    factorizations += integrator.last_factorizations();
     ++steps;
   };
   for (auto _ : state) step();
   state.counters["newton_per_step"] = static_cast<double>(iterations) / static_cast<double>(steps);
+  state.counters["factor_per_step"] =
+      static_cast<double>(factorizations) / static_cast<double>(steps);
   bench::RecordStepExtremes(state, step);
   state.counters["dofs"] = model.FreeDofCount();
 }

@@ -8,7 +8,7 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
   std::vector<std::string> warnings;
   const AnalysisType type = scene.analysis.type;
   if (type != AnalysisType::kStatic && type != AnalysisType::kModal &&
-      type != AnalysisType::kBuckling) {
+      type != AnalysisType::kBuckling && type != AnalysisType::kPullin) {
     return warnings;
   }
   const std::string unchanged = std::string(" does not change a ") + ToString(type) + " analysis: ";
@@ -28,6 +28,21 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
     warnings.push_back("loads.time_function = \"" +
                        std::string(ToString(scene.loads.time_function->kind)) + "\"" + unchanged +
                        "it sets how the loads vary in transient analyses only");
+  }
+  if (type == AnalysisType::kPullin && !MakeLoadCase(scene).Empty()) {
+    warnings.push_back("loads" + unchanged +
+                       "the pull-in voltage is the unloaded beam's (the electrode alone pulls it)");
+  }
+  const std::optional<ElectrostaticEffect>& electrode = scene.effects.electrostatic;
+  if (type == AnalysisType::kPullin && electrode && electrode->voltage) {
+    warnings.push_back("effects.electrostatic.voltage" + unchanged +
+                       "the voltage is what the analysis finds");
+  }
+  if (type == AnalysisType::kBuckling && scene.model.theory != Theory::kLinear) {
+    warnings.push_back("model.theory = \"" + std::string(ToString(scene.model.theory)) + "\"" +
+                       unchanged +
+                       "the critical load is where the straight beam bifurcates, the same in "
+                       "every theory (it is computed from the linear beam)");
   }
   if (type == AnalysisType::kBuckling && !MakeLoadCase(scene).Empty()) {
     warnings.push_back("loads" + unchanged +

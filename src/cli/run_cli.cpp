@@ -12,6 +12,7 @@
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "modal_report.hpp"
+#include "pullin_report.hpp"
 #include "static_report.hpp"
 #include "transient_report.hpp"
 
@@ -49,6 +50,7 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kBuckling:
       return internal::BucklingReport::Run(scene);
     case AnalysisType::kPullin:
+      return internal::PullInReport::Run(scene);
     case AnalysisType::kRelease:
     case AnalysisType::kHaptic:
       break;

@@ -39,8 +39,14 @@ void RunHeader::AddJson(nlohmann::ordered_json& json) const {
 void RunHeader::Print(std::ostream& out) const {
   out << scene << ": " << ToString(analysis) << " analysis, " << ToString(model.theory)
       << " theory\n";
-  out << "model      " << model.dimension << "-D, " << model.elements << " elements, series order "
-      << model.series_order << ", " << dofs << " free dofs\n";
+  out << "model      " << model.dimension << "-D, " << model.elements;
+  // The rod's elements interpolate linearly; the series order belongs to the beam's.
+  if (model.theory == Theory::kCosserat) {
+    out << " two-node rod elements";
+  } else {
+    out << " elements, series order " << model.series_order;
+  }
+  out << ", " << dofs << " free dofs\n";
   out << "status     " << ToString(status) << "\n";
   out << "wall time  " << Significant(wall_time_s * 1e3, 3) << " ms\n";
 }

@@ -6,8 +6,12 @@
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
 #include "cosmems/beam/stretching_force.hpp"
+#include "cosmems/rod/cosserat_static_solver.hpp"
+#include "cosmems/rod/rod_field.hpp"
+#include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
+#include "nodal_shape.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -55,23 +59,55 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   }
   results.midspan_displacement = field.At(0.5 * length).template head<3>();
   results.max_deflection = field.MaxDeflectionTowardSubstrate();
-  results.max_stress_pa = field.MaxStress();
-  results.axial_force_n = field.AxialForce(0) + stretched * model.units().force;
-  const Eigen::MatrixXd values = field.AtNodes();
-  results.nodes.resize(values.rows(), 7);
-  for (Eigen::Index n = 0; n < values.rows(); ++n) {
-    results.nodes(n, 0) = model.NodeX()[n] * model.units().length;
-    results.nodes.row(n).tail<6>() = values.row(n);
-  }
+  const double stretched_n = stretched * model.units().force;
+  results.max_stress_pa = field.MaxStress(stretched_n);
+  results.axial_force_n = field.AxialForce(0) + stretched_n;
+  results.nodes = WithNodePositions(model.NodeX(), model.units().length, field.AtNodes());
   header.WarnIfThroughSubstrate(
       stretching ? "the solution deflects" : "the linear solution deflects", results.max_deflection,
       results.gap);
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
 
+// Large deflections: the Cosserat rod's equilibrium, reached from the straight rod by Newton with
+// adaptive load steps.
+std::unique_ptr<StaticReport> RunCosseratStatic(const Scene& scene) {
+  RunHeader header = RunHeader::Start(scene);
+  const LoadCase loads = MakeLoadCase(scene);
+  const auto start = std::chrono::steady_clock::now();
+  const CosseratRod rod(MakeBeamDescription(scene));
+  CosseratStaticSolver solver(rod);
+  header.status = solver.Solve(RodLoadsFor(rod, loads));
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.dofs = rod.FreeDofCount();
+
+  StaticResults results;
+  results.gap = scene.structure.gap;
+  if (header.status != Status::kOk) {
+    return std::make_unique<StaticReport>(std::move(header), std::move(results));
+  }
+  const RodState& state = solver.state();
+  const RodField field(rod, state);
+  if (scene.structure.kind == StructureKind::kCantilever) {
+    results.tip_displacement = rod.TipDisplacement(state);
+    results.tip_rotation = rod.TipRotation(state);
+  }
+  results.midspan_displacement = rod.DisplacementAt(state, 0.5 * scene.structure.length);
+  results.max_deflection = field.MaxDeflectionTowardSubstrate();
+  results.max_stress_pa = field.MaxStress();
+  Eigen::Vector3d force, moment;
+  rod.ElementResultants(state, 0, force, moment);
+  results.axial_force_n = force.x();
+  results.nodes = WithNodePositions(rod.NodeX(), rod.units().length, field.AtNodes());
+  header.WarnIfThroughSubstrate("the solution deflects", results.max_deflection, results.gap);
+  return std::make_unique<StaticReport>(std::move(header), std::move(results));
+}
+
 }  // namespace
 
 std::unique_ptr<StaticReport> StaticReport::Run(const Scene& scene) {
+  if (scene.model.theory == Theory::kCosserat) return RunCosseratStatic(scene);
   return scene.model.dimension == 2 ? RunStatic<2>(scene) : RunStatic<3>(scene);
 }
 

@@ -5,8 +5,10 @@
 #include <optional>
 #include <string>
 
+#include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/beam/stretching_force.hpp"
+#include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "csv_file.hpp"
 #include "text_format.hpp"
@@ -23,21 +25,38 @@ const char* OutputPointName(StructureKind kind) {
   return kind == StructureKind::kCantilever ? "tip" : "midspan";
 }
 
+// Runs the scene's model; `dofs` becomes its free degrees of freedom.
 template <int Dim>
-std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
+TransientResult RunBeam(const Scene& scene, const LoadCase& loads, const TransientOptions& options,
+                        int& dofs) {
+  const BeamModel<Dim> model(MakeBeamDescription(scene));
+  dofs = model.FreeDofCount();
+  std::optional<StretchingForce<Dim>> stretching;
+  if (scene.model.theory == Theory::kStretching) stretching.emplace(model);
+  return RunTransient(model, loads, options, stretching ? &*stretching : nullptr);
+}
+
+TransientResult RunRod(const Scene& scene, const LoadCase& loads, const TransientOptions& options,
+                       int& dofs) {
+  const CosseratRod rod(MakeBeamDescription(scene));
+  dofs = rod.FreeDofCount();
+  return RunCosseratTransient(rod, RodLoadsFor(rod, loads), options);
+}
+
+}  // namespace
+
+std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
   RunHeader header = RunHeader::Start(scene);
   const LoadCase loads = MakeLoadCase(scene);
   const TransientOptions options = MakeTransientOptions(scene);
   const auto start = std::chrono::steady_clock::now();
-  const BeamModel<Dim> model(MakeBeamDescription(scene));
-  std::optional<StretchingForce<Dim>> stretching;
-  if (scene.model.theory == Theory::kStretching) stretching.emplace(model);
   const TransientResult result =
-      RunTransient(model, loads, options, stretching ? &*stretching : nullptr);
+      scene.model.theory == Theory::kCosserat ? RunRod(scene, loads, options, header.dofs)
+      : scene.model.dimension == 2            ? RunBeam<2>(scene, loads, options, header.dofs)
+                                              : RunBeam<3>(scene, loads, options, header.dofs);
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.status;
-  header.dofs = model.FreeDofCount();
 
   TransientResults results;
   results.kind = scene.structure.kind;
@@ -61,6 +80,15 @@ std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
                               " modes asked for, but the model has only " +
                               std::to_string(header.dofs));
   }
+  const GeneralizedAlphaParameters& p = options.parameters;
+  if (scene.model.theory == Theory::kCosserat && p.gamma == 0.5 && p.alpha_m == 0.0 &&
+      p.alpha_f == 0.0) {
+    header.warnings.push_back(
+        "analysis.integrator = \"" + std::string(ToString(scene.analysis.integrator)) +
+        "\" with gamma = 0.5 leaves the rod's axial and shear vibrations undamped, and large "
+        "motions can pump energy into them until the step fails; \"generalized-alpha\" with "
+        "rho_inf = 0.9 damps them and keeps the bending second-order accurate");
+  }
   if (loads.points.empty() && loads.distributed.isZero(0.0)) {
     header.warnings.push_back("the loads are all zero: the beam stays at rest");
   }
@@ -70,12 +98,6 @@ std::unique_ptr<TransientReport> RunTransientScene(const Scene& scene) {
         result.max_toward_substrate, scene.structure.gap);
   }
   return std::make_unique<TransientReport>(std::move(header), std::move(results));
-}
-
-}  // namespace
-
-std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
-  return scene.model.dimension == 2 ? RunTransientScene<2>(scene) : RunTransientScene<3>(scene);
 }
 
 void TransientReport::AddResults(nlohmann::ordered_json& json) const {

@@ -1,10 +1,12 @@
 #include "cosmems/scene/scene_conversion.hpp"
 
+#include <cmath>
+
 namespace cosmems {
 namespace {
 
-// Where a transient analysis records uy: the free end of a cantilever, the middle of a bridge,
-// where a load on either moves the beam most.
+// Where a transient analysis records uy and a pull-in imposes its travel: the free end of a
+// cantilever, the middle of a bridge, where a load on either moves the beam most.
 double TransientOutputX(const SceneStructure& structure) {
   return structure.kind == StructureKind::kCantilever ? structure.length : 0.5 * structure.length;
 }
@@ -106,6 +108,19 @@ TransientOptions MakeTransientOptions(const Scene& scene) {
   out.time_function = MakeLoadTimeFunction(scene);
   out.damping = MakeDampingModel(scene);
   out.output_x = TransientOutputX(scene.structure);
+  return out;
+}
+
+PullInOptions MakePullInOptions(const Scene& scene) {
+  PullInOptions out;
+  const SceneStructure& structure = scene.structure;
+  const ElectrostaticEffect& electrode = *scene.effects.electrostatic;
+  out.electrode.gap = *structure.gap;
+  out.electrode.start = electrode.electrode_start.value_or(0.0);
+  out.electrode.end = electrode.electrode_end.value_or(structure.length);
+  out.fringing = electrode.fringing;
+  out.control_x = TransientOutputX(structure);
+  if (scene.analysis.voltage_max) out.fold.max_load = std::pow(*scene.analysis.voltage_max, 2);
   return out;
 }
 

@@ -284,6 +284,7 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
     r.Require(a.count >= 1, "analysis.count", "must be at least 1");
   }
   if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
+  if (a.type == AnalysisType::kPullin) a.voltage_max = r.OptionalPositive("analysis.voltage_max");
   return a;
 }
 
@@ -346,27 +347,76 @@ void CheckStretching(const TomlFieldReader& r, const Scene& scene) {
             "family integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
 }
 
+// The Cosserat rod is a 3-D model solved by Newton: no planar form, no modes of its own, no
+// explicit or modal stepping, no damping model.
+void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.model.theory != Theory::kCosserat) return;
+  r.Require(scene.model.dimension == 3, "model.dimension",
+            "model.theory = \"cosserat\" is a 3-D rod: set model.dimension = 3 (planar loads "
+            "keep it in the plane)");
+  r.Require(scene.analysis.type != AnalysisType::kModal, "analysis.type",
+            "\"modal\" is not available for model.theory = \"cosserat\" (\"linear\" gives the "
+            "modes of the straight beam, \"stretching\" those of a deflected bridge)");
+  r.Require(scene.analysis.type != AnalysisType::kPullin, "analysis.type",
+            "\"pullin\" is not available for model.theory = \"cosserat\" (\"linear\", or "
+            "\"stretching\" for a bridge)");
+  if (scene.analysis.type != AnalysisType::kTransient) return;
+  r.Require(scene.analysis.integrator != Integrator::kModal &&
+                scene.analysis.integrator != Integrator::kCentralDifference,
+            "analysis.integrator",
+            "model.theory = \"cosserat\" is solved by Newton: it needs an implicit Newmark-"
+            "family integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
+  const std::optional<DampingEffect>& damping = scene.effects.damping;
+  r.Require(!damping || !damping->enabled, "effects.damping",
+            "not available for model.theory = \"cosserat\" (remove the table or set enabled = "
+            "false)");
+}
+
+// A pull-in needs the substrate and its electrode; the surface forces it may add need their
+// parameters.
+void CheckPullin(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.analysis.type != AnalysisType::kPullin) return;
+  r.Require(scene.structure.gap.has_value(), "structure.gap",
+            "analysis.type = \"pullin\" needs the substrate: give its gap");
+  const std::optional<ElectrostaticEffect>& electrostatic = scene.effects.electrostatic;
+  r.Require(electrostatic && electrostatic->enabled, "effects.electrostatic",
+            "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic]");
+  const std::optional<VanDerWaalsEffect>& vdw = scene.effects.van_der_waals;
+  r.Require(!vdw || !vdw->enabled || vdw->hamaker.has_value(), "effects.van_der_waals",
+            "needs its hamaker constant (J), e.g. hamaker = 1e-19");
+}
+
 // What the schema describes but this version cannot simulate is refused, never ignored. Each
 // later feature removes its line here.
 void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
   const std::string unavailable = "not available in this version";
-  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
-            unavailable + " (\"linear\" and \"stretching\" are)");
   const AnalysisType type = scene.analysis.type;
-  r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-                type == AnalysisType::kTransient || type == AnalysisType::kBuckling,
-            "analysis.type",
-            unavailable + " (available: \"static\", \"modal\", \"buckling\", \"transient\")");
+  r.Require(
+      type == AnalysisType::kStatic || type == AnalysisType::kModal ||
+          type == AnalysisType::kTransient || type == AnalysisType::kBuckling ||
+          type == AnalysisType::kPullin,
+      "analysis.type",
+      unavailable + " (available: \"static\", \"modal\", \"buckling\", \"transient\", \"pullin\")");
   const SceneEffects& e = scene.effects;
-  const std::array<std::pair<const char*, bool>, 5> effects = {
-      {{"contact", e.contact && e.contact->enabled},
-       {"stiction", e.stiction && e.stiction->enabled},
-       {"electrostatic", e.electrostatic && e.electrostatic->enabled},
-       {"casimir", e.casimir && e.casimir->enabled},
-       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled}}};
-  for (const auto& [name, enabled] : effects) {
-    r.Require(!enabled, std::string("effects.") + name,
-              "the effect is " + unavailable + " (remove the table or set enabled = false)");
+  // The surface pressures act in pull-in analyses so far; contact and stiction nowhere yet.
+  struct Effect {
+    const char* name;
+    bool enabled;
+    bool available;
+    const char* where;
+  };
+  const bool pullin = type == AnalysisType::kPullin;
+  const char* beyond_pullin = " beyond analysis.type = \"pullin\"";
+  const std::array<Effect, 5> effects = {
+      {{"contact", e.contact && e.contact->enabled, false, ""},
+       {"stiction", e.stiction && e.stiction->enabled, false, ""},
+       {"electrostatic", e.electrostatic && e.electrostatic->enabled, pullin, beyond_pullin},
+       {"casimir", e.casimir && e.casimir->enabled, pullin, beyond_pullin},
+       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled, pullin, beyond_pullin}}};
+  for (const Effect& effect : effects) {
+    r.Require(!effect.enabled || effect.available, std::string("effects.") + effect.name,
+              "the effect is " + unavailable + effect.where +
+                  " (remove the table or set enabled = false)");
   }
   r.Require(!scene.device, "device",
             unavailable + " (it drives the haptic analysis, not built yet)");
@@ -389,6 +439,8 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   CheckLoads(r, scene);
   CheckTransient(r, scene);
   CheckStretching(r, scene);
+  CheckCosserat(r, scene);
+  CheckPullin(r, scene);
   RefuseUnavailable(r, scene);
   return scene;
 }

@@ -8,6 +8,8 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "beam/stretched_bridge.hpp"
+#include "force_differences.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -43,32 +45,11 @@ double Energy(const BeamModel<Dim>& model, const StretchingForce<Dim>& force,
 TEST(StretchingForceTest, ForceAndTangentMatchFiniteDifferencesOfTheEnergy) {
   const BeamModel<3> model(Bridge(6));
   StretchingForce<3> force(model);
-  const int n = model.FreeDofCount();
   std::srand(7);
-  const Eigen::VectorXd d = Eigen::VectorXd::Random(n);
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
-  ForceTangent tangent(n, model.Stiffness().bandwidth());
-  tangent.Clear();
-  ASSERT_TRUE(force.Evaluate(d, r, tangent));
-  const Eigen::MatrixXd dense = tangent.ToDense();
-  const double h = 1e-6;
-  Eigen::MatrixXd fd_tangent(n, n);
-  Eigen::VectorXd fd_force(n);
-  for (int i = 0; i < n; ++i) {
-    Eigen::VectorXd plus = d, minus = d;
-    plus[i] += h;
-    minus[i] -= h;
-    fd_force[i] = (Energy(model, force, plus) - Energy(model, force, minus)) / (2 * h);
-    Eigen::VectorXd rp = Eigen::VectorXd::Zero(n), rm = Eigen::VectorXd::Zero(n);
-    ForceTangent scratch(n, model.Stiffness().bandwidth());
-    scratch.Clear();
-    ASSERT_TRUE(force.Evaluate(plus, rp, scratch));
-    scratch.Clear();
-    ASSERT_TRUE(force.Evaluate(minus, rm, scratch));
-    fd_tangent.col(i) = (rp - rm) / (2 * h);
-  }
-  EXPECT_LT((fd_force - r).norm(), 1e-7 * r.norm());
-  EXPECT_LT((fd_tangent - dense).norm(), 1e-7 * dense.norm());
+  const Eigen::VectorXd d = Eigen::VectorXd::Random(model.FreeDofCount());
+  test::ExpectForceAndTangentMatchDifferences(
+      force, d, model.Stiffness().bandwidth(),
+      [&](const Eigen::VectorXd& x) { return Energy(model, force, x); }, 1e-6, 1e-7);
 }
 
 TEST(StretchingForceTest, RefusesABeamWithAFreeEnd) {
@@ -77,40 +58,9 @@ TEST(StretchingForceTest, RefusesABeamWithAFreeEnd) {
   EXPECT_THROW(StretchingForce<2>{cantilever}, std::invalid_argument);
 }
 
-// The clamped-clamped beam under a uniform load q at a given tension N (k^2 = N / EI), with
-// xi = x - L/2: w = A + B cosh(k xi) - q xi^2 / (2N), B = q L / (2 N k sinh(k L/2)),
-// A = q L^2 / (8N) - B cosh(k L/2). Its stretching s(N) = 1/2 int w'^2 by Simpson's rule on 4000
-// intervals (error ~1e-13 relative); the tension solves N = N0 + EA s(N) / L by bisection.
-struct ExactBridge {
-  double tension = 0.0;
-  double midspan = 0.0;
-};
-
-ExactBridge SolveExactBridge(double q, double n0) {
-  auto solution = [&](double n, double& midspan) {
-    const double k = std::sqrt(n / Eiz());
-    const double b = q * kL / (2 * n * k * std::sinh(k * kL / 2));
-    const double a = q * kL * kL / (8 * n) - b * std::cosh(k * kL / 2);
-    midspan = a + b;
-    const int intervals = 4000;
-    double sum = 0.0;
-    for (int i = 0; i <= intervals; ++i) {
-      const double xi = -kL / 2 + kL * i / intervals;
-      const double slope = b * k * std::sinh(k * xi) - q * xi / n;
-      const double weight = (i == 0 || i == intervals) ? 1 : (i % 2 ? 4 : 2);
-      sum += weight * slope * slope;
-    }
-    return 0.5 * sum * (kL / intervals) / 3;
-  };
-  double lo = std::max(n0, 1e-12 * Ea()), hi = Ea();
-  double midspan = 0.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (mid - n0 - Ea() * solution(mid, midspan) / kL < 0 ? lo : hi) = mid;
-  }
-  const double n = 0.5 * (lo + hi);
-  solution(n, midspan);
-  return {n, midspan};
+// The exact bridge of the reference section (tests/beam/stretched_bridge.hpp).
+test::StretchedBridge SolveExactBridge(double q, double n0) {
+  return test::SolveStretchedBridge(kL, Eiz(), Ea(), q, n0);
 }
 
 template <int Dim>
@@ -128,7 +78,7 @@ NonlinearStaticSolution SolveBridge(const BeamModel<Dim>& model, double q) {
 TEST(StretchingForceTest, UniformlyLoadedBridgeMatchesTheExactSolution) {
   const double q = -100.0;  // N/m toward the substrate
   for (double n0 : {0.0, 2e-4}) {
-    const ExactBridge exact = SolveExactBridge(q, n0);
+    const test::StretchedBridge exact = SolveExactBridge(q, n0);
     BeamDescription beam = Bridge(40);
     beam.axial_load = n0;
     const BeamModel<2> model(beam);

@@ -376,8 +376,8 @@ TEST(RunCliTest, SceneErrorsAreOneLineWithExitTwo) {
             "axially: structure.kind = \"bridge\"\n");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "structure.lenght=1e-4"}),
                  "structure.lenght = 1e-04: unknown key");
-  ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=pullin"}),
-                 "analysis.type = \"pullin\": not available in this version");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=release"}),
+                 "analysis.type = \"release\": not available in this version");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "model.elements"}),
                  "expected KEY=VALUE");
   ExpectContains(InvalidInput({"run", "no-such-scene"}),

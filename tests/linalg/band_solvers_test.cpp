@@ -2,9 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <random>
 
 #include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/linalg/cholmod_solver.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
 
@@ -21,6 +23,20 @@ SymmetricBandMatrix RandomSpdBand(int n, int bw, unsigned seed) {
   }
   for (int j = 0; j < n; ++j) a.Add(j, j, 2.0 * bw + 1.0 + u(random));
   return a;
+}
+
+// Products by the fixed-bandwidth kernel (5) and by the general loop (7), overwritten and added.
+TEST(SymmetricBandMatrixTest, ProductsAgreeWithDenseForEveryKernel) {
+  for (int bw : {0, 3, 5, 7}) {
+    const SymmetricBandMatrix a = RandomSpdBand(40, bw, 3);
+    const Eigen::MatrixXd dense = a.ToDense();
+    const Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(40, -1.0, 2.0);
+    Eigen::VectorXd y = Eigen::VectorXd::Constant(40, 7.0);  // overwritten, not added to
+    a.Multiply(x, y);
+    EXPECT_LT((y - dense * x).norm(), 1e-13 * (dense * x).norm()) << bw;
+    a.MultiplyAdd(x, y, -0.5);
+    EXPECT_LT((y - 0.5 * dense * x).norm(), 1e-13 * (dense * x).norm()) << bw;
+  }
 }
 
 TEST(SymmetricBandMatrixTest, MultiplyAndConversionsAgreeWithDense) {
@@ -54,7 +70,47 @@ TEST_P(BandSolverTest, SolvesLikeDenseCholesky) {
 
 INSTANTIATE_TEST_SUITE_P(Sizes, BandSolverTest,
                          ::testing::Values(std::make_tuple(1, 0), std::make_tuple(12, 5),
-                                           std::make_tuple(60, 11), std::make_tuple(300, 11)));
+                                           std::make_tuple(60, 11), std::make_tuple(300, 11),
+                                           std::make_tuple(40, 7)));  // 7: the general loops
+
+// Two right-hand sides solved together give what one at a time gives.
+TEST_P(BandSolverTest, SolvesTwoSystemsTogether) {
+  const auto [n, bw] = GetParam();
+  const SymmetricBandMatrix a = RandomSpdBand(n, bw, 5u + n);
+  const BandCholesky band(a);
+  ASSERT_EQ(band.info(), Status::kOk);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, -3.0);
+  const Eigen::VectorXd c = Eigen::VectorXd::LinSpaced(n, -2.0, 0.5);
+  Eigen::VectorXd x = b, y = c;
+  band.SolveInPlace(x, y);
+  EXPECT_LT((x - band.Solve(b)).norm(), 1e-14 * x.norm());
+  EXPECT_LT((y - band.Solve(c)).norm(), 1e-14 * y.norm());
+}
+
+// The band factored once, the rank-one part renewed on it (what a Newton iteration does when
+// the band part of its tangent barely moved), against dense LU of the whole sum.
+TEST(BandRankOneCholeskyTest, RenewsTheRankOnePartOnAKeptBandFactor) {
+  const SymmetricBandMatrix band = RandomSpdBand(50, 5, 9);
+  BandRankOneCholesky solver;
+  ASSERT_EQ(solver.ComputeBand(band), Status::kOk);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(50, 2.0, -1.0);
+  for (double shift : {0.0, 1.0, 2.0}) {
+    const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(50, 1.0 + shift, 3.0 - shift);
+    const double scale = 0.3 + shift;
+    const Eigen::MatrixXd dense = band.ToDense() + scale * u * u.transpose();
+    const Eigen::VectorXd exact = dense.lu().solve(b);
+    Eigen::VectorXd x = b;
+    ASSERT_EQ(solver.SetRankOneAndSolve(scale, u, x), Status::kOk);
+    EXPECT_LT((x - exact).norm(), 1e-12 * exact.norm()) << shift;
+    x = b;  // the renewed part stays for later solves
+    solver.SolveInPlace(x);
+    EXPECT_LT((x - exact).norm(), 1e-12 * exact.norm()) << shift;
+    ASSERT_EQ(solver.SetRankOne(scale, u), Status::kOk);
+    x = b;
+    solver.SolveInPlace(x);
+    EXPECT_LT((x - exact).norm(), 1e-12 * exact.norm()) << shift;
+  }
+}
 
 TEST(BandCholeskyTest, ReportsASingularMatrixInsteadOfReturningGarbage) {
   SymmetricBandMatrix a(3, 1);  // the stiffness of a free bar: singular

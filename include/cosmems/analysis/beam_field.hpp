@@ -54,15 +54,18 @@ class BeamField {
     return (model_.AxialLoad() + p.young_modulus * p.area * strain) * model_.units().force;
   }
 
-  /// The largest normal stress [Pa] at the outer fibres: |E du/dx| + E |k_y| t/2 + E |k_z| b/2,
-  /// over both ends of every element (the static curvature is linear along an element, so its
-  /// extremes sit at the ends).
-  double MaxStress() const {
+  /// The largest normal stress [Pa] at the outer fibres: |N + added_axial_force| / A +
+  /// E |k_y| t/2 + E |k_z| b/2 with N = AxialForce(e), over both ends of every element (the
+  /// static curvature is linear along an element, so its extremes sit at the ends).
+  /// `added_axial_force` [N] is an axial force the displacements do not carry: a stretching
+  /// beam's tension from its deflection.
+  double MaxStress(double added_axial_force = 0.0) const {
     double most = 0.0;
     for (int e = 0; e < model_.ElementCount(); ++e) {
       const ElementProperties& p = model_.elements()[e].properties();
       const Local q = LocalValues(e);
-      const double axial = std::abs(p.young_modulus * (q[kUx1] - q[kUx0]) / p.length);
+      const double axial =
+          std::abs(AxialForce(e) + added_axial_force) / model_.units().force / p.area;
       for (double xi : {0.0, 1.0}) {
         const ShapeValues s = ShapeValues::At(model_.bases(), xi);
         const double ky =

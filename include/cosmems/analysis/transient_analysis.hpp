@@ -1,7 +1,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -10,7 +9,9 @@
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/output_point.hpp"
-#include "cosmems/analysis/step_timing.hpp"
+#include "cosmems/analysis/transient_options.hpp"
+#include "cosmems/analysis/transient_recorder.hpp"
+#include "cosmems/analysis/transient_result.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/load_vector.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
@@ -23,58 +24,6 @@
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 
 namespace cosmems {
-
-/// How a transient run advances in time.
-enum class TimePath {
-  kNewmarkFamily,  ///< full order, the linear fast path with GeneralizedAlphaParameters
-  kModal,          ///< `modes` modes propagated exactly, truncated modes statically
-};
-
-struct TransientOptions {
-  double duration = 0.0;   ///< s
-  double time_step = 0.0;  ///< s
-  TimePath path = TimePath::kNewmarkFamily;
-  GeneralizedAlphaParameters parameters;  ///< for kNewmarkFamily
-  int modes = 0;                          ///< for kModal: >= 1
-  /// false: from rest, loads applied by `time_function`; true: from the static deflection under
-  /// the loads, which are removed at t = 0 (a release).
-  bool start_static = false;
-  LoadTimeFunction time_function;
-  DampingModel damping;
-  SpdSolverKind solver = SpdSolverKind::kAuto;
-  double output_x = 0.0;    ///< m: where uy is recorded (the tip or mid-span)
-  int max_history = 20000;  ///< samples kept in the history, evenly strided
-
-  void Validate() const {
-    RequirePositive("analysis.duration", duration);
-    RequirePositive("analysis.time_step", time_step);
-    if (time_step > duration) {
-      throw std::invalid_argument("analysis.time_step = " + FormatValue(time_step) +
-                                  ": longer than analysis.duration = " + FormatValue(duration));
-    }
-    if (path == TimePath::kModal && modes < 1) {
-      throw std::invalid_argument("model.modes = " + std::to_string(modes) +
-                                  ": the modal integrator needs at least one mode");
-    }
-  }
-};
-
-struct TransientResult {
-  Status status = Status::kOk;
-  long steps = 0;
-  StepTiming step_time;
-  double wall_time_s = 0.0;      ///< set-up and stepping
-  double stepping_time_s = 0.0;  ///< the steps alone (their timed sum)
-  double simulated_time_s = 0.0;
-  double max_abs_output = 0.0;  ///< m: largest |uy| at the output point
-  /// m: largest -uy at the output point, its deflection toward the substrate (0 when it never
-  /// moves that way)
-  double max_toward_substrate = 0.0;
-  std::vector<double> time_s;  ///< history
-  std::vector<double> output_m;
-
-  double RealtimeFactor() const { return wall_time_s > 0.0 ? simulated_time_s / wall_time_s : 0.0; }
-};
 
 /// A transient run of `model` under `loads` (one spatial pattern times the time function), by
 /// the full-order Newmark family or by exact modal propagation. With a nonlinear `force`
@@ -89,13 +38,11 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
         "analysis.integrator = \"modal\": modal propagation is linear; a nonlinear theory "
         "needs a Newmark-family integrator");
   }
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  TransientRecorder recorder(options, model.description().Length());
   TransientResult result;
   const UnitSystem& units = model.units();
   const int n = model.FreeDofCount();
   const double dt = options.time_step / units.time;
-  const auto steps = static_cast<long>(std::llround(options.duration / options.time_step));
   const Eigen::VectorXd pattern = AssembleLoads(model, loads);
   const OutputPoint output = OutputPoint::DeflectionAt(model, options.output_x);
 
@@ -115,47 +62,6 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
     }
     d0 = stiffness.Solve(pattern);
   }
-  LoadTimeFunction time_function = options.time_function;
-  if (options.start_static) time_function.kind = LoadTimeFunction::Kind::kZero;
-  auto amplitude = [&](long i) {
-    return time_function.Value(static_cast<double>(i) * options.time_step);
-  };
-
-  const long stride = std::max<long>(1, steps / std::max(1, options.max_history));
-  std::vector<double> step_us;
-  step_us.reserve(static_cast<std::size_t>(steps));
-  auto record = [&](long i, double uy) {
-    result.max_abs_output = std::max(result.max_abs_output, std::abs(uy));
-    result.max_toward_substrate = std::max(result.max_toward_substrate, -uy);
-    if (i % stride == 0 || i == steps) {
-      result.time_s.push_back(static_cast<double>(i) * options.time_step);
-      result.output_m.push_back(uy);
-    }
-  };
-  // Runs the steps; `step(i)` advances to step i and returns its status, `sample()` reads uy.
-  // A linear model whose output point has moved a thousand beam lengths has diverged (an
-  // explicit step just above its stability limit grows geometrically long before it overflows).
-  const double divergence = 1e3 * model.description().Length();
-  auto run = [&](auto&& step, auto&& sample) {
-    record(0, sample());
-    for (long i = 1; i <= steps; ++i) {
-      const auto before = Clock::now();
-      const Status status = step(i);
-      step_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - before).count());
-      if (status != Status::kOk) {
-        result.status = status;
-        return;
-      }
-      result.steps = i;
-      const double uy = sample();
-      record(i, uy);
-      if (std::abs(uy) > divergence) {
-        result.status = Status::kDiverged;
-        return;
-      }
-    }
-  };
-
   if (options.path == TimePath::kModal) {
     ModalOptions modal_options;
     modal_options.count = options.modes;
@@ -167,13 +73,14 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
     const ModalModel modal = MakeModalModel(model, modes, options.damping);
     const Eigen::MatrixXd residual = modal.ResidualFlexibility(model, pattern);
     ModalPropagator propagator(modal.coordinates, modal.shapes, pattern, residual, dt);
-    Eigen::VectorXd s = Eigen::VectorXd::Constant(1, amplitude(0));
+    Eigen::VectorXd s = Eigen::VectorXd::Constant(1, options.Amplitude(0));
     propagator.Initialize(model.Mass(0) * d0, Eigen::VectorXd::Zero(n), s);
     const Eigen::RowVectorXd output_shapes = output.Evaluate(modal.shapes);
     const double output_static = output.Evaluate(residual.col(0).eval());
-    run(
+    recorder.Run(
+        result,
         [&](long i) {
-          s[0] = amplitude(i);
+          s[0] = options.Amplitude(i);
           return propagator.Step(s);
         },
         [&] { return output_shapes.dot(propagator.modal_displacement()) + output_static * s[0]; });
@@ -190,12 +97,13 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
     }
     // Returns false when the integrator could not start (the status says why).
     auto march = [&](auto& integrator) {
-      Eigen::VectorXd f = pattern * amplitude(0);
+      Eigen::VectorXd f = pattern * options.Amplitude(0);
       result.status = integrator.Initialize(d0, Eigen::VectorXd::Zero(n), f);
       if (result.status != Status::kOk) return false;
-      run(
+      recorder.Run(
+          result,
           [&](long i) {
-            f = pattern * amplitude(i);
+            f = pattern * options.Amplitude(i);
             return integrator.Step(f);
           },
           [&] { return output.Evaluate(integrator.displacement()); });
@@ -213,10 +121,7 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
     }
     if (!started) return result;
   }
-  for (const double us : step_us) result.stepping_time_s += 1e-6 * us;
-  result.step_time = StepTiming::From(std::move(step_us));
-  result.simulated_time_s = static_cast<double>(result.steps) * options.time_step;
-  result.wall_time_s = std::chrono::duration<double>(Clock::now() - start).count();
+  recorder.Finish(result);
   return result;
 }
 

@@ -38,6 +38,12 @@ class SymmetricBandMatrix {
 
   /// y = A x. Allocates nothing.
   void Multiply(const Eigen::Ref<const Eigen::VectorXd>& x, Eigen::Ref<Eigen::VectorXd> y) const {
+    const int stride = static_cast<int>(data_.rows());
+    const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
+      internal::SymmetricBandMultiplyAdd<decltype(w)::value, false>(data_.data(), stride, size_,
+                                                                    x.data(), 1.0, y.data());
+    });
+    if (fixed) return;
     y.setZero();
     MultiplyAdd(x, y);
   }

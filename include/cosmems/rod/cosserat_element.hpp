@@ -10,11 +10,14 @@
 namespace cosmems {
 namespace internal {
 
-/// m += a b^T for 3-vectors as a coefficient-wise (lazy) product: Eigen's general outer-product
-/// kernel is an out-of-line call at -O2.
-inline void AddOuterProduct(Eigen::Matrix3d& m, const Eigen::Vector3d& a,
-                            const Eigen::Vector3d& b) {
-  m += a.lazyProduct(b.transpose());
+/// a x b and a . b on plain arrays, for CosseratElement::Hessian.
+inline void Cross3(const double* a, const double* b, double* out) {
+  out[0] = a[1] * b[2] - a[2] * b[1];
+  out[1] = a[2] * b[0] - a[0] * b[2];
+  out[2] = a[0] * b[1] - a[1] * b[0];
+}
+inline double Dot3(const double* a, const double* b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 }  // namespace internal
@@ -224,38 +227,48 @@ inline void CosseratElement::Gradient(const Eigen::Vector3d& du, const Eigen::Qu
 }
 
 inline void CosseratElement::Hessian(const Kinematics& k, Tangent& tangent) const {
-  using Eigen::Matrix3d;
-  using Eigen::Vector3d;
-  const double h = length;
-  const Matrix3d& r = k.rotation;
-  const Vector3d& n = k.force;
-  const Vector3d& m = k.moment;
-  const Vector3d& nu = k.axis;
-  const Vector3d& d = k.chord;
+  // Plain doubles throughout: Eigen's packet code for 3-vectors and 3 x 3 matrices (a packet
+  // and a scalar tail, SSE2) costs more in shuffles and store-forwarding stalls than it saves
+  // here: the same algebra took 130 ns per element with Eigen expressions, HESSIAN_NS ns this way.
+  using internal::Cross3;
+  using internal::Dot3;
+  double n[3], m[3], nu[3], d[3];
+  for (int i = 0; i < 3; ++i) {
+    n[i] = k.force[i];
+    m[i] = k.moment[i];
+    nu[i] = k.axis[i];
+    d[i] = k.chord[i];
+  }
+  const double sig = k.sigma;
   const double t = k.sine / (1.0 + k.cosine);  // tan(|psi| / 4)
-  const Vector3d tau = t * nu;
-  const double nu_m = nu.dot(m);
-  const Vector3d sm = k.sigma * m + (1.0 - k.sigma) * nu_m * nu;  // S m
-  const Vector3d c = n.cross(d);
+  const double nu_m = Dot3(nu, m);
+  double tau[3], sm[3], m_perp[3], c[3], c_nu[3];
+  for (int i = 0; i < 3; ++i) {
+    tau[i] = t * nu[i];
+    m_perp[i] = m[i] - nu_m * nu[i];
+    sm[i] = sig * m_perp[i] + nu_m * nu[i];  // S m
+  }
+  Cross3(n, d, c);
+  Cross3(c, nu, c_nu);
 
   // Coefficients of the log map's derivatives; their closed forms cancel near psi = 0, where
   // the series (in s = sin(|psi|/2), errors < 1e-17) take over.
   const double sine = k.sine;
-  const double phi = 2.0 * k.sigma * sine;  // |psi|
-  double sigma_prime = 0.0;                 // d sigma / d|psi|
-  double one_minus_sigma_over_phi = 0.0;    // (1 - sigma) / |psi|
-  double t_over_phi = 0.25;                 // tan(|psi|/4) / |psi|
+  const double phi = 2.0 * sig * sine;    // |psi|
+  double sigma_prime = 0.0;               // d sigma / d|psi|
+  double one_minus_sigma_over_phi = 0.0;  // (1 - sigma) / |psi|
+  double t_over_phi = 0.25;               // tan(|psi|/4) / |psi|
   if (sine < 1e-2) {
     const double s2 = sine * sine;
     sigma_prime = sine * (1.0 / 6.0 + s2 * (1.0 / 15.0 + s2 * 4.0 / 105.0));
     // (1 - sigma)/phi = -(s^2/6 + 3 s^4/40 + 5 s^6/112) / (2 s sigma)
     one_minus_sigma_over_phi =
-        -sine * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * 5.0 / 112.0)) / (2.0 * k.sigma);
+        -sine * (1.0 / 6.0 + s2 * (3.0 / 40.0 + s2 * 5.0 / 112.0)) / (2.0 * sig);
     if (sine > 0.0) t_over_phi = t / phi;
   } else {
-    const double half = k.sigma * sine;
+    const double half = sig * sine;
     sigma_prime = 0.5 * (sine - half * k.cosine) / (sine * sine);
-    one_minus_sigma_over_phi = (1.0 - k.sigma) / phi;
+    one_minus_sigma_over_phi = (1.0 - sig) / phi;
     t_over_phi = t / phi;
   }
   const double t_prime = 0.25 * (1.0 + t * t);  // d tan(|psi|/4) / d|psi|
@@ -264,63 +277,126 @@ inline void CosseratElement::Hessian(const Kinematics& k, Tangent& tangent) cons
   // midpoint spin omega = (I + T)/2 theta_a + (I - T)/2 theta_b, T = [tau]x, the change of psi
   // (material) S R_m^T (theta_b - theta_a), and the directors e_k = R_m e_k, every block is a
   // sum of outer products and skew matrices of the element's vectors:
-  //   dn/d(du) = C_f / h = sum_k (c_k / h) e_k e_k^T,
-  //   dc/d(du) = (dn/d(omega))^T = sum_k (c_k / h) f_k e_k^T + [n]x = Y, f_k = e_k x d,
-  //   dc/d(omega) = sum_k (c_k / h) f_k f_k^T + n d^T - (d . n) I = W   (c = n x d),
+  //   dn/d(du) = F = R_m diag(C_f) R_m^T / h,
+  //   dc/d(du) = (dn/d(omega))^T = [n]x - [d]x F = Y   (c = n x d),
+  //   dc/d(omega) = [d]x F [d]x^T + n d^T - (d . n) I = W,
   //   d(S m)/d(omega) = -[S m]x (a rigid spin of the midpoint frame turns S m with it).
-  const Matrix3d i3 = Matrix3d::Identity();
-  const Vector3d scaled_force = force_stiffness / h;
-  const Vector3d scaled_moment = moment_stiffness / h;
-  Matrix3d cf = Matrix3d::Zero();
-  Matrix3d y = Skew(n);
-  Matrix3d w = n * d.transpose() - d.dot(n) * i3;
-  Matrix3d tw = t * (nu.cross(n) * d.transpose() - d.dot(n) * Skew(nu));  // T W
-  Matrix3d sms = Matrix3d::Zero();                                        // S C_m S / h
-  for (int j = 0; j < 3; ++j) {
-    const Vector3d e = r.col(j);
-    const Vector3d f = e.cross(d);
-    const Vector3d scaled_f = scaled_force[j] * f;
-    const Vector3d se = k.sigma * e + (1.0 - k.sigma) * nu.dot(e) * nu;
-    internal::AddOuterProduct(cf, scaled_force[j] * e, e);
-    internal::AddOuterProduct(y, scaled_f, e);
-    internal::AddOuterProduct(w, scaled_f, f);
-    internal::AddOuterProduct(tw, t * nu.cross(scaled_f), f);
-    internal::AddOuterProduct(sms, scaled_moment[j] * se, se);
-  }
   // Rotational rows: with A = c/2 and B = c x tau / 2 - S m the gradient is A + B at node a and
   // A - B at node b, and
-  //   d(A + B)/d(omega) = U = (I - T) W / 2 - E,  d(A - B)/d(omega) = W - U,
-  //   E = t [c]x [nu]x / 2 - [S m]x = t (nu c^T - (c . nu) I) / 2 - [S m]x,
-  //   dB/d(theta_b - theta_a) = B_t = [c]x (d tau/d psi) S / 2 - (d(S m)/d psi) S.
-  // Only sym(B_t) enters the Hessian: S C_m S / h, the rank-2 sym(z nu^T) and the projector
-  // (I - nu nu^T) part; its skew [c]x term drops out.
-  const Matrix3d u = 0.5 * (w - tw) - 0.5 * t * (nu * c.transpose() - c.dot(nu) * i3) + Skew(sm);
-  // X T row by row: (x^T [nu]x) = (x x nu)^T.
-  Matrix3d ut, wt;
-  for (int row = 0; row < 3; ++row) {
-    ut.row(row) = t * Vector3d(u.row(row).transpose()).cross(nu).transpose();
-    wt.row(row) = t * Vector3d(w.row(row).transpose()).cross(nu).transpose();
+  //   d(A + B)/d(omega) = U = (I - T) W / 2 + E,  d(A - B)/d(omega) = W - U,
+  //   E = -t (nu c^T - (c . nu) I) / 2 + [S m]x,
+  //   dB/d(theta_b - theta_a) = B_t = [c]x (d tau/d psi) S / 2 - (d(S m)/d psi) S,
+  // and D's rotational blocks are (theta_a, theta_a) = U (I + T)/2 - B_t, (theta_b, theta_b) =
+  // (W - U)(I - T)/2 - B_t, (theta_b, theta_a) = (W - U)(I + T)/2 + B_t. Only sym(B_t) enters
+  // the Hessian: S C_m S / h (C_m spatial), the rank-2 sym(z nu^T) and the projector
+  // (I - nu nu^T) part; its skew [c]x term drops out. Expanded with (I - T)^T = I + T, the
+  // blocks see W only through its symmetric part W_s, in (I -+ T) W_s (I +- T) =
+  // W_s -+ (A + A^T) - T W_s T and (I + T) W_s (I + T) = W_s + A - A^T + T W_s T (A = T W_s),
+  // and E only through rank-2 terms in nu and a skew matrix:
+  //   K(theta_a, theta_a) = H - Delta,  K(theta_b, theta_b) = H + Delta,
+  //   K(theta_b, theta_a) = (W_s + T W_s T)/4 - R + (A - A^T)/4 + [t (c x nu)/8 - S m/2]x,
+  //   H = (W_s - T W_s T)/4 + R,  Delta = (A + A^T)/4 + t (sym(nu c^T) - (c . nu) I)/4,
+  // with R = S C_m S / h - sym(B_t) + sym(E T)/2 (symmetric). The product form took the
+  // reference cantilever's tangent at 50 elements 9.1 us (cosserat_bench,
+  // BM_NewtonIterationParts/1); this one TANGENT_US us.
+  double f[3][3], cm[3][3];  // F and S-less C_m / h, spatial: r diag(.) r^T / h
+  {
+    const Eigen::Matrix3d& r = k.rotation;
+    const double inv_h = 1.0 / length;
+    double rf[3][3], rm[3][3];
+    for (int i = 0; i < 3; ++i) {
+      for (int l = 0; l < 3; ++l) {
+        rf[i][l] = r(i, l) * force_stiffness[l] * inv_h;
+        rm[i][l] = r(i, l) * moment_stiffness[l] * inv_h;
+      }
+    }
+    for (int j = 0; j < 3; ++j) {
+      for (int i = j; i < 3; ++i) {
+        f[i][j] = f[j][i] = rf[i][0] * r(j, 0) + rf[i][1] * r(j, 1) + rf[i][2] * r(j, 2);
+        cm[i][j] = cm[j][i] = rm[i][0] * r(j, 0) + rm[i][1] * r(j, 1) + rm[i][2] * r(j, 2);
+      }
+    }
   }
-  const Vector3d m_perp = m - nu_m * nu;
-  const Vector3d z = (0.5 * (t_prime - t_over_phi * k.sigma)) * c.cross(nu) -
-                     (sigma_prime + one_minus_sigma_over_phi * k.sigma) * m_perp;
-  const Matrix3d b_sym = 0.5 * (z * nu.transpose() + nu * z.transpose()) - sms -
-                         (one_minus_sigma_over_phi * k.sigma * nu_m) * (i3 - nu * nu.transpose());
-  // D blocks: (theta_a, theta_a) = U (I + T)/2 - B_t, (theta_a, theta_b) = U (I - T)/2 + B_t,
-  // (theta_b, theta_a) = V (I + T)/2 + B_t, (theta_b, theta_b) = V (I - T)/2 - B_t, V = W - U.
-  const Matrix3d p_aa = 0.5 * (u + ut);
-  const Matrix3d p_bb = 0.5 * ((w - u) - (wt - ut));
-  const Matrix3d h_ba = 0.25 * ((w - u) + (wt - ut) + u.transpose() - ut.transpose()) + b_sym;
-  // (theta_a, u_a) = -(I - T) Y / 2 and (theta_b, u_a) = -(I + T) Y / 2.
-  Matrix3d ty;
-  for (int col = 0; col < 3; ++col) ty.col(col) = tau.cross(y.col(col));
-
-  tangent.force = cf;
-  tangent.rotation_a_force = -0.5 * (y - ty);
-  tangent.rotation_b_force = -0.5 * (y + ty);
-  tangent.rotation_aa = 0.5 * (p_aa + p_aa.transpose()) - b_sym;
-  tangent.rotation_bb = 0.5 * (p_bb + p_bb.transpose()) - b_sym;
-  tangent.rotation_ba = h_ba;
+  // [d]x F by columns (df[j] is column j), and W_s = [d]x ([d]x F)^T + sym(n d^T) - (d . n) I.
+  double df[3][3], ws[3][3];
+  for (int j = 0; j < 3; ++j) {
+    const double column[3] = {f[0][j], f[1][j], f[2][j]};
+    Cross3(d, column, df[j]);
+  }
+  const double dn = Dot3(d, n);
+  for (int j = 0; j < 3; ++j) {
+    const double row[3] = {df[0][j], df[1][j], df[2][j]};
+    double g[3];
+    Cross3(d, row, g);
+    for (int i = j; i < 3; ++i) ws[i][j] = ws[j][i] = g[i] + 0.5 * (n[i] * d[j] + d[i] * n[j]);
+    ws[j][j] -= dn;
+  }
+  // A = T W_s (a[j] is column j) and T W_s T = -T A^T, symmetric (twt[j] is column j).
+  double a[3][3], twt[3][3];
+  for (int j = 0; j < 3; ++j) {
+    const double column[3] = {ws[0][j], ws[1][j], ws[2][j]};
+    Cross3(tau, column, a[j]);
+  }
+  for (int j = 0; j < 3; ++j) {
+    const double row[3] = {a[0][j], a[1][j], a[2][j]};
+    Cross3(row, tau, twt[j]);
+  }
+  // R = sig^2 C_m + sym(nu w^T) + alpha I with S C_m S = sig^2 C_m + sig (1 - sig)
+  // (nu g^T + g nu^T) + (1 - sig)^2 (nu . g) nu nu^T, g = C_m nu, folded into w.
+  const double projector = one_minus_sigma_over_phi * sig * nu_m;
+  const double z_c = 0.5 * (t_prime - t_over_phi * sig);
+  const double z_m = sigma_prime + one_minus_sigma_over_phi * sig;
+  double g[3];
+  for (int i = 0; i < 3; ++i) g[i] = cm[i][0] * nu[0] + cm[i][1] * nu[1] + cm[i][2] * nu[2];
+  const double nu_nu = (1.0 - sig) * (1.0 - sig) * Dot3(nu, g) - projector;
+  const double alpha = projector - 0.5 * t * nu_m;
+  const double c_dot_nu = Dot3(c, nu);
+  double w[3], wa[3], wb[3];  // R's w, and w -+ t c / 8 for Delta's sym(nu c^T) term
+  for (int i = 0; i < 3; ++i) {
+    const double z = z_c * c_nu[i] - z_m * m_perp[i];
+    const double x0 = 0.5 * t * sm[i] - 0.25 * t * t * c_nu[i] - z;
+    w[i] = sig * (1.0 - sig) * g[i] + 0.5 * x0 + 0.5 * nu_nu * nu[i];
+    wa[i] = w[i] - 0.125 * t * c[i];
+    wb[i] = w[i] + 0.125 * t * c[i];
+  }
+  double spin[3];
+  for (int i = 0; i < 3; ++i) spin[i] = 0.125 * t * c_nu[i] - 0.5 * sm[i];
+  const double sig2 = sig * sig;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = j; i < 3; ++i) {
+      const double base = 0.25 * (ws[i][j] - twt[j][i]) + sig2 * cm[i][j];
+      const double a_sym = 0.25 * (a[j][i] + a[i][j]);
+      double aa = base - a_sym + nu[i] * wa[j] + wa[i] * nu[j];
+      double bb = base + a_sym + nu[i] * wb[j] + wb[i] * nu[j];
+      double ba_sym = 0.25 * (ws[i][j] + twt[j][i]) - sig2 * cm[i][j] - nu[i] * w[j] - w[i] * nu[j];
+      double ba_skew = 0.25 * (a[j][i] - a[i][j]);
+      if (i == j) {
+        aa += alpha + 0.25 * t * c_dot_nu;
+        bb += alpha - 0.25 * t * c_dot_nu;
+        ba_sym -= alpha;
+      } else {
+        // [spin]x below the diagonal: (1, 0) = spin_z, (2, 0) = -spin_y, (2, 1) = spin_x.
+        ba_skew += (i - j == 2 ? -1.0 : 1.0) * spin[3 - i - j];
+      }
+      tangent.rotation_aa(i, j) = tangent.rotation_aa(j, i) = aa;
+      tangent.rotation_bb(i, j) = tangent.rotation_bb(j, i) = bb;
+      tangent.rotation_ba(i, j) = ba_sym + ba_skew;
+      tangent.rotation_ba(j, i) = ba_sym - ba_skew;
+    }
+  }
+  // Y = [n]x - [d]x F; (theta_a, u_a) = -(I - T) Y / 2 and (theta_b, u_a) = -(I + T) Y / 2.
+  for (int j = 0; j < 3; ++j) {
+    double y[3] = {-df[j][0], -df[j][1], -df[j][2]};  // column j
+    y[(j + 1) % 3] += n[(j + 2) % 3];                 // n x e_j
+    y[(j + 2) % 3] -= n[(j + 1) % 3];
+    double ty[3];
+    Cross3(tau, y, ty);
+    for (int i = 0; i < 3; ++i) {
+      tangent.rotation_a_force(i, j) = -0.5 * (y[i] - ty[i]);
+      tangent.rotation_b_force(i, j) = -0.5 * (y[i] + ty[i]);
+      tangent.force(i, j) = f[i][j];
+    }
+  }
 }
 
 }  // namespace cosmems

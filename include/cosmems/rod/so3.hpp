@@ -31,10 +31,14 @@ inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
 inline Eigen::Quaterniond QuaternionExp(const Eigen::Vector3d& theta) {
   const double angle = theta.norm();
   const double half = 0.5 * angle;
+  // Both unconditionally, so that the compiler makes them one sincos call (a Newton update
+  // takes one exponential per node).
+  const double sine = std::sin(half);
+  const double cosine = std::cos(half);
   // sin(half) / angle, by its series where the quotient would lose digits (error < 1e-20).
-  const double k = angle < 1e-4 ? 0.5 * (1.0 - half * half / 6.0) : std::sin(half) / angle;
+  const double k = angle < 1e-4 ? 0.5 * (1.0 - half * half / 6.0) : sine / angle;
   Eigen::Quaterniond q;
-  q.w() = std::cos(half);
+  q.w() = cosine;
   q.vec() = k * theta;
   return q;
 }

@@ -204,6 +204,9 @@ struct SceneAnalysis {
   double alpha = 0.05;   ///< hht, in [0, 1/3]
   double rho_inf = 0.8;  ///< generalized-alpha: spectral radius at infinite frequency, in [0, 1]
   InitialState initial = InitialState::kRest;
+
+  // pullin
+  std::optional<double> voltage_max;  ///< V: search no further than this voltage
 };
 
 /// [device]: the haptic device of a haptic analysis.

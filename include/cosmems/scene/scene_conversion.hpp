@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cosmems/analysis/pullin_analysis.hpp"
 #include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/beam/load_case.hpp"
@@ -40,5 +41,9 @@ GeneralizedAlphaParameters MakeIntegratorParameters(const SceneAnalysis& analysi
 /// integrator (model.modes modes for "modal"), initial state, time function, damping, and uy
 /// recorded at the free end of a cantilever (x = length) or the middle of a bridge (length / 2).
 TransientOptions MakeTransientOptions(const Scene& scene);
+
+/// The pull-in analysis of a validated pullin scene: its electrode (the whole beam unless given),
+/// fringing, the travel imposed at the tip or midspan, and voltage_max as the search's bound.
+PullInOptions MakePullInOptions(const Scene& scene);
 
 }  // namespace cosmems

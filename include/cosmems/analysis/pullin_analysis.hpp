@@ -1,0 +1,178 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cmath>
+
+#include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/fold_search.hpp"
+#include "cosmems/analysis/output_point.hpp"
+#include "cosmems/beam/beam_model.hpp"
+#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/linalg/band_rank_one_cholesky.hpp"
+#include "cosmems/surface/gap_force.hpp"
+#include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/time/newton_options.hpp"
+
+namespace cosmems {
+
+struct PullInOptions {
+  GapSpan electrode;  ///< the gap and the electrode's extent [m] along the beam
+  bool fringing = false;
+  double control_x = 0.0;  ///< m: where the travel is imposed (the tip, or a bridge's midspan)
+  FoldOptions fold;
+  NewtonOptions newton;
+};
+
+struct PullInResult {
+  Status status = Status::kOk;
+  double scale = 0.0;            ///< the pressure's scale at the fold (V^2 for electrostatics)
+  double voltage_v = 0.0;        ///< the pull-in voltage
+  double travel_m = 0.0;         ///< deflection at control_x at pull-in (toward the substrate)
+  double displacement_m = 0.0;   ///< largest deflection of the last stable state computed
+  Eigen::VectorXd displacement;  ///< that state (reduced, internal units)
+  int solves = 0;
+  int iterations = 0;
+};
+
+/// The equilibrium path of a beam pulled by a scaled gap pressure under displacement control: at
+/// travel s (a fraction of the gap) the deflection at control_x is -s gap, and the pressure's
+/// scale lambda is the unknown that holds it there:
+///   K d + r(d) + lambda r_1(d) = 0,   e^T d = -s gap,
+/// r_1 the force of `pressure` (the electrostatic one at 1 V, so that lambda = V^2; or a surface
+/// force, lambda its multiple) and r any other nonlinear force (stretching, surface forces). Newton
+/// on the bordered system, solved with two solves of the stiffness part J = K + dr/dd + lambda
+/// dr_1/dd: J a = -R, J b = r_1, d lambda = (e^T a + c) / e^T b. The bordered matrix stays regular
+/// through the fold where J turns singular, and J is positive definite on the stable side, where
+/// FindFold keeps the solves. d lambda / ds = gap / e^T b.
+template <int Dim, typename Pressure>
+class FoldPath {
+ public:
+  FoldPath(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
+           NonlinearForce* other)
+      : model_(model),
+        pulling_(model, pressure, options.electrode),
+        other_(other),
+        control_(OutputPoint::DeflectionAt(model, options.control_x)),
+        gap_(options.electrode.gap),
+        newton_(options.newton) {
+    const int n = model.FreeDofCount();
+    const int w = model.Stiffness().bandwidth();
+    other_tangent_ = ForceTangent(n, w);
+    pulling_tangent_ = ForceTangent(n, w);
+    jacobian_ = SymmetricBandMatrix(n, w);
+    for (Eigen::VectorXd* v : {&d_, &accepted_, &rate_, &kd_, &r_, &r1_, &residual_, &a_, &b_}) {
+      v->setZero(n);
+    }
+  }
+
+  Status Solve(double s, double& lambda, double& slope) {
+    d_ = accepted_ + (s - s_) * rate_;
+    lambda_ = accepted_lambda_ + (s - s_) * accepted_slope_;
+    const double target = -s * gap_;
+    for (int iteration = 0;; ++iteration) {
+      double reference = 0.0;
+      if (!Evaluate(reference)) return Status::kNonFinite;
+      const double c = control_.Evaluate(d_) - target;
+      const bool converged = residual_.norm() <= newton_.residual_tolerance * reference &&
+                             std::abs(c) <= newton_.residual_tolerance * gap_;
+      const Status factored = Factor();
+      if (factored != Status::kOk) return factored;
+      b_ = r1_;
+      factor_.SolveInPlace(b_);
+      const double eb = control_.Evaluate(b_);
+      if (converged) {
+        trial_slope_ = gap_ / eb;
+        lambda = lambda_;
+        slope = trial_slope_;
+        trial_s_ = s;
+        return Status::kOk;
+      }
+      if (iteration == newton_.max_iterations) return Status::kNotConverged;
+      ++iterations_;
+      a_ = -residual_;
+      factor_.SolveInPlace(a_);
+      const double dlambda = (control_.Evaluate(a_) + c) / eb;
+      d_ += a_ - dlambda * b_;
+      lambda_ += dlambda;
+    }
+  }
+
+  void Accept() {
+    s_ = trial_s_;
+    accepted_ = d_;
+    accepted_lambda_ = lambda_;
+    accepted_slope_ = trial_slope_;
+    rate_ = -trial_slope_ * b_;
+  }
+
+  const Eigen::VectorXd& accepted() const { return accepted_; }
+  int iterations() const { return iterations_; }
+
+ private:
+  // R = K d + r(d) + lambda r_1(d) and both tangents; false outside a force's domain.
+  bool Evaluate(double& reference) {
+    r_.setZero();
+    r1_.setZero();
+    other_tangent_.Clear();
+    pulling_tangent_.Clear();
+    if (other_ && !other_->Evaluate(d_, r_, other_tangent_)) return false;
+    if (!pulling_.Evaluate(d_, r1_, pulling_tangent_)) return false;
+    model_.Stiffness().Multiply(d_, kd_);
+    residual_ = kd_ + r_ + lambda_ * r1_;
+    reference = kd_.norm() + r_.norm() + std::abs(lambda_) * r1_.norm();
+    return residual_.allFinite();
+  }
+
+  Status Factor() {
+    jacobian_.mutable_data() = model_.Stiffness().data() + other_tangent_.band().data() +
+                               lambda_ * pulling_tangent_.band().data();
+    return factor_.Compute(jacobian_, other_tangent_.rank_one_scale(),
+                           other_tangent_.rank_one_vector());
+  }
+
+  const BeamModel<Dim>& model_;
+  GapForce<Dim, Pressure> pulling_;
+  NonlinearForce* other_;
+  OutputPoint control_;
+  double gap_;  ///< m, as the control point measures deflections
+  NewtonOptions newton_;
+  ForceTangent other_tangent_, pulling_tangent_;
+  SymmetricBandMatrix jacobian_;
+  BandRankOneCholesky factor_;
+  Eigen::VectorXd d_, accepted_, rate_, kd_, r_, r1_, residual_, a_, b_;
+  double lambda_ = 0.0, accepted_lambda_ = 0.0, accepted_slope_ = 0.0, trial_slope_ = 0.0;
+  double s_ = 0.0, trial_s_ = 0.0;
+  int iterations_ = 0;
+};
+
+/// The fold of a FoldPath: its pressure's largest scale before the beam snaps onto the substrate,
+/// with `voltage_v` the square root of that scale (the voltage for the electrostatic pressure at
+/// 1 V). `options.fringing` is the electrostatic pressure's business and unused here.
+template <int Dim, typename Pressure>
+PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
+                       NonlinearForce* other = nullptr) {
+  FoldPath<Dim, Pressure> path(model, pressure, options, other);
+  const FoldPoint fold = FindFold(path, options.fold);
+  PullInResult out;
+  out.scale = fold.load;
+  out.status = fold.status;
+  out.solves = fold.solves;
+  out.iterations = path.iterations();
+  out.displacement = path.accepted();
+  if (fold.status != Status::kOk) return out;
+  out.voltage_v = std::sqrt(fold.load);
+  out.travel_m = fold.travel * options.electrode.gap;
+  out.displacement_m = BeamField<Dim>(model, out.displacement).MaxDeflectionTowardSubstrate();
+  return out;
+}
+
+/// The pull-in voltage of a beam over an electrode (options.electrode, with or without fringing
+/// fields). `other` adds the forces the scene declares besides the electrostatic one.
+template <int Dim>
+PullInResult SolvePullIn(const BeamModel<Dim>& model, const PullInOptions& options,
+                         NonlinearForce* other = nullptr) {
+  const double width = model.description().elements[0].section.width;
+  return SolveFold(model, ElectrostaticPressure{1.0, width, options.fringing}, options, other);
+}
+
+}  // namespace cosmems

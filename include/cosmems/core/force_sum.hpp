@@ -1,0 +1,28 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "cosmems/core/nonlinear_force.hpp"
+
+namespace cosmems {
+
+/// The sum of the nonlinear forces a scene declares, composed at run time: only those added are
+/// evaluated. At most one of them may carry a rank-one tangent part (mid-plane stretching).
+class ForceSum final : public NonlinearForce {
+ public:
+  void Add(NonlinearForce& force) { forces_.push_back(&force); }
+  bool Empty() const { return forces_.empty(); }
+
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
+    for (NonlinearForce* f : forces_) {
+      if (!f->Evaluate(d, force, tangent)) return false;
+    }
+    return true;
+  }
+
+ private:
+  std::vector<NonlinearForce*> forces_;
+};
+
+}  // namespace cosmems

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+
+#include "analysis_report.hpp"
+#include "cosmems/scene/scene.hpp"
+
+namespace cosmems::internal {
+
+/// What a pull-in analysis reports, in SI (SCENES.md, pullin).
+struct PullInResults {
+  double voltage_v = 0.0;       ///< the pull-in voltage
+  double displacement_m = 0.0;  ///< largest deflection of the last stable state
+  double travel_m = 0.0;        ///< deflection at the tip (midspan) at pull-in
+  double gap_m = 0.0;
+  int solves = 0;
+  int iterations = 0;
+  Eigen::MatrixXd shape;  ///< the last stable state: one row per node, x (m), ux ... rz
+};
+
+/// Electrostatic pull-in by displacement control (SolvePullIn) with the scene's theory and
+/// surface forces: pullin_voltage_v, pullin_displacement_m and pullin_shape.csv.
+class PullInReport final : public AnalysisReport {
+ public:
+  PullInReport(RunHeader header, PullInResults results)
+      : AnalysisReport(std::move(header)), results_(std::move(results)) {}
+
+  static std::unique_ptr<PullInReport> Run(const Scene& scene);
+
+  const PullInResults& results() const { return results_; }
+
+  /// pullin_shape.csv: x_m, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad of the last stable state.
+  void WriteFiles(const std::filesystem::path& directory) const override;
+
+ protected:
+  void AddResults(nlohmann::ordered_json& json) const override;
+  void PrintResults(std::ostream& out) const override;
+
+ private:
+  PullInResults results_;
+};
+
+}  // namespace cosmems::internal
