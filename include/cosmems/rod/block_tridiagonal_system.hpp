@@ -18,12 +18,17 @@ namespace cosmems {
 ///
 /// Factorisation: block LDL^T node by node, S_0 = K_00, G_i = K_(i+1),i S_i^-1,
 /// S_(i+1) = K_(i+1),(i+1) - G_i K_(i+1),i^T, keeping S_i^-1 and G_i. S_i^-1 comes from its 3 x 3
-/// blocks by cofactors (no square root, two divisions); the rest are fixed-size 6 x 6 products,
-/// which vectorise. Its pivots (those of S_i's LDL^T) are checked as BandCholesky checks its
-/// own. On the reference cantilever's matrix at 50 elements (-O2, development machine) it
-/// factors in 8.1 us and solves in 1.6 us, against 15.7 us and 6.3 us for BandCholesky on the
-/// same matrix in band storage (bandwidth 11, supported rows removed): cosserat_bench,
-/// BM_NewtonIterationParts and BM_BandCholeskyOfTheRodMatrix.
+/// blocks by cofactors (no square root, two divisions), and S_(i+1) from 6 x 3 pieces of that
+/// elimination (see EliminateNode) in fixed-size products, which vectorise. Its pivots (those
+/// of S_i's LDL^T) are checked as BandCholesky checks its own. On the reference cantilever's
+/// matrix at 50 elements (-O3, SSE2, medians on a shared 2-core machine) it factors in 5.0 us
+/// and solves in 1.1 us, against 16 us and 2.3 us for BandCholesky on the same matrix in band
+/// storage (bandwidth 11, supported rows removed): cosserat_bench, BM_NewtonIterationParts
+/// (whose factorisation case also copies the matrix, about 1.6 us) and
+/// BM_BandCholeskyOfTheRodMatrix. The same elimination in 6 x 6 blocks (S_i^-1 and G_i first,
+/// then G_i K_(i+1),i^T) took 5.9 us. An in-place 6 x 6 LDL^T of each S_i factored in 5.1 us
+/// but, solving by substitution through L_i (two dependent chains a node), made the solve
+/// 3.7 us; keeping L_i^-1 as well, 5.9 us and 2.5 us.
 ///
 /// The non-symmetric addition carries the load stiffness of follower loads at the last node
 /// (the rod's free end): eliminating the chain in node order leaves that block for the end, so
@@ -205,9 +210,8 @@ class BlockTridiagonalSystem {
   // The pivots are those of S's LDL^T, each checked against its diagonal entry. The next
   // complement is formed from these 6 x 3 pieces rather than as G K^T: (K1 A^-1) K1^T needs
   // only A^-1, and the rest waits for T^-1 alone, not for S^-1 and G, which the solve needs but
-  // the next node does not. The chain of dependent operations from node to node is about half
-  // as long, and the factorisation of the reference cantilever's matrix (50 elements) falls
-  // from FACTOR_OLD us to FACTOR_NEW us.
+  // the next node does not. That shortens the chain of dependent operations from node to node,
+  // which sets the pace here: 5.0 us against 5.9 us for the reference cantilever's matrix.
   Status EliminateNode(int i, Block& s) {
     const BlockVector reference = diagonal_[i].diagonal();
     Eigen::Matrix3d a_inverse, t_inverse;
@@ -234,6 +238,8 @@ class BlockTridiagonalSystem {
     }
     const Eigen::Matrix3d y = t_inverse * x;  // T^-1 X
     Block& inverse = inverse_[i];
+    // By coefficients: as a sum with the product X^T Y, Eigen evaluates this through an
+    // out-of-line call per coefficient.
     for (int col = 0; col < 3; ++col) {
       for (int row = 0; row < 3; ++row) {
         inverse(row, col) = a_inverse(row, col) + x.col(row).dot(y.col(col));

@@ -148,26 +148,20 @@ class CosseratRod {
     for (int e = 0; e < ElementCount(); ++e) {
       elements_[e].Hessian(kinematics[e], k);
       BlockTridiagonalSystem::Block& a = tangent.Diagonal(e);  // holds element e-1's share
+      a.topLeftCorner<3, 3>() += k.force;
+      a.bottomLeftCorner<3, 3>() += k.rotation_a_force;
+      a.topRightCorner<3, 3>() += k.rotation_a_force.transpose();
+      a.bottomRightCorner<3, 3>() += k.rotation_aa;
       BlockTridiagonalSystem::Block& b = tangent.Diagonal(e + 1);
+      b.topLeftCorner<3, 3>() = k.force;
+      b.bottomLeftCorner<3, 3>() = -k.rotation_b_force;
+      b.topRightCorner<3, 3>() = -k.rotation_b_force.transpose();
+      b.bottomRightCorner<3, 3>() = k.rotation_bb;
       BlockTridiagonalSystem::Block& ba = tangent.Lower(e);  // rows of b, columns of a
-      // Entry by entry: Eigen's 3 x 3 block assignments into 6 x 6 matrices are out-of-line
-      // calls at -O3.
-      for (int j = 0; j < 3; ++j) {
-        for (int i = 0; i < 3; ++i) {
-          a(i, j) += k.force(i, j);
-          a(i + 3, j) += k.rotation_a_force(i, j);
-          a(j, i + 3) += k.rotation_a_force(i, j);
-          a(i + 3, j + 3) += k.rotation_aa(i, j);
-          b(i, j) = k.force(i, j);
-          b(i + 3, j) = -k.rotation_b_force(i, j);
-          b(j, i + 3) = -k.rotation_b_force(i, j);
-          b(i + 3, j + 3) = k.rotation_bb(i, j);
-          ba(i, j) = -k.force(i, j);
-          ba(j, i + 3) = -k.rotation_a_force(i, j);
-          ba(i + 3, j) = k.rotation_b_force(i, j);
-          ba(i + 3, j + 3) = k.rotation_ba(i, j);
-        }
-      }
+      ba.topLeftCorner<3, 3>() = -k.force;
+      ba.topRightCorner<3, 3>() = -k.rotation_a_force.transpose();
+      ba.bottomLeftCorner<3, 3>() = k.rotation_b_force;
+      ba.bottomRightCorner<3, 3>() = k.rotation_ba;
     }
   }
 
