@@ -11,7 +11,7 @@
 namespace cosmems {
 
 /// Solves (B + s u u^T) x = b for a symmetric band B by Sherman-Morrison (B definite, or B with
-/// one negative eigenvalue that a positive s u u^T lifts, see ComputeIndefiniteBand):
+/// one negative eigenvalue that a positive s u u^T lifts, see ComputeWithIndefiniteBand):
 /// x = B^-1 b - w s (u^T B^-1 b) / (1 + s u^T w), w = B^-1 u. One band factorisation and one
 /// extra back-solve per Compute(), one back-solve and two dot products per solve, so a
 /// stretching beam keeps the cost of a band.
@@ -23,8 +23,8 @@ namespace cosmems {
 class BandRankOneCholesky {
  public:
   Status Compute(const SymmetricBandMatrix& band, double scale, const Eigen::VectorXd& u) {
-    if (ComputeBand(band) == Status::kNotPositiveDefinite && scale > 0.0) {
-      return status_ = ComputeIndefiniteBand(band, scale, u);
+    if (ComputeBand(band) == Status::kNotPositiveDefinite) {
+      return ComputeWithIndefiniteBand(band, scale, u);
     }
     if (status_ != Status::kOk) return status_;
     return SetRankOne(scale, u);
@@ -36,6 +36,25 @@ class BandRankOneCholesky {
     band_.Compute(band);
     scale_ = 0.0;
     return status_ = band_.info();
+  }
+
+  /// B + s u u^T where ComputeBand() found B not definite. A positive rank-one part can make the
+  /// sum definite where B is not: a bridge that mid-plane stretching holds beyond the point where
+  /// its bending stiffness alone would give way (pressed past the linear pull-in travel, say). B
+  /// then has one negative eigenvalue, and by the matrix determinant lemma
+  /// det(B + s u u^T) = det(B) (1 + s u^T B^-1 u): the sum, whose other eigenvalues stay above
+  /// B's positive ones, is definite exactly when that factor is negative. B is factored by
+  /// BandLdlt, which counts the negative eigenvalues; SetRankOne() does not apply to it.
+  Status ComputeWithIndefiniteBand(const SymmetricBandMatrix& band, double scale,
+                                   const Eigen::VectorXd& u) {
+    if (!(scale > 0.0)) return status_ = Status::kNotPositiveDefinite;
+    if (ldlt_.Compute(band) != Status::kOk) return status_ = ldlt_.info();
+    if (ldlt_.negative_pivots() != 1) return status_ = Status::kNotPositiveDefinite;
+    indefinite_ = true;
+    scale_ = scale;
+    w_ = u;
+    ldlt_.SolveInPlace(w_);
+    return status_ = Finish(u);
   }
 
   /// Replaces the rank-one part of the factored B + s u u^T, keeping B's factor.
@@ -75,34 +94,14 @@ class BandRankOneCholesky {
   }
 
  private:
-  // With w = B^-1 u solved: the denominator, and whether B + s u u^T is definite.
+  // With w = B^-1 u solved: the denominator, and whether B + s u u^T is definite: when
+  // 1 + s u^T B^-1 u > 0 for a definite B, < 0 for a B with one negative eigenvalue.
   Status Finish(const Eigen::VectorXd& u) {
     denominator_ = 1.0 + scale_ * u.dot(w_);
     u_ = u;
-    // B + s u u^T is definite exactly when 1 + s u^T B^-1 u > 0 (B definite).
     if (!std::isfinite(denominator_)) return Status::kNonFinite;
-    return denominator_ > 0.0 ? Status::kOk : Status::kNotPositiveDefinite;
-  }
-
-  // A positive rank-one part can make the sum definite where B is not: a bridge that mid-plane
-  // stretching holds beyond the point where its bending stiffness alone would give way (pressed
-  // past the linear pull-in travel, say). B then has one negative eigenvalue, and by the matrix
-  // determinant lemma det(B + s u u^T) = det(B) (1 + s u^T B^-1 u): the sum, whose other
-  // eigenvalues stay above B's positive ones, is definite exactly when that factor is negative.
-  // Factored by BandLdlt, which counts the negative eigenvalues.
-  Status ComputeIndefiniteBand(const SymmetricBandMatrix& band, double scale,
-                               const Eigen::VectorXd& u) {
-    if (ldlt_.Compute(band) != Status::kOk) return ldlt_.info();
-    if (ldlt_.negative_pivots() != 1) return Status::kNotPositiveDefinite;
-    scale_ = scale;
-    w_ = u;
-    ldlt_.SolveInPlace(w_);
-    denominator_ = 1.0 + scale_ * u.dot(w_);
-    u_ = u;
-    if (!std::isfinite(denominator_)) return Status::kNonFinite;
-    if (!(denominator_ < 0.0)) return Status::kNotPositiveDefinite;
-    indefinite_ = true;
-    return Status::kOk;
+    const bool definite = indefinite_ ? denominator_ < 0.0 : denominator_ > 0.0;
+    return definite ? Status::kOk : Status::kNotPositiveDefinite;
   }
 
   BandCholesky band_;

@@ -246,7 +246,7 @@ class NonlinearNewmarkIntegrator {
           factor_ct_ = ct;
           solved = factor_.SetRankOneAndSolve(scale, u, residual_);
         } else {  // the band alone is not definite: the whole tangent may be (not kept)
-          solved = factor_.Compute(jacobian_, scale, u);
+          solved = factor_.ComputeWithIndefiniteBand(jacobian_, scale, u);
           if (solved == Status::kOk) factor_.SolveInPlace(residual_);
         }
         if (solved != Status::kOk) return solved;
