@@ -8,7 +8,8 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
   std::vector<std::string> warnings;
   const AnalysisType type = scene.analysis.type;
   if (type != AnalysisType::kStatic && type != AnalysisType::kModal &&
-      type != AnalysisType::kBuckling && type != AnalysisType::kPullin) {
+      type != AnalysisType::kBuckling && type != AnalysisType::kPullin &&
+      type != AnalysisType::kRelease) {
     return warnings;
   }
   const std::string unchanged = std::string(" does not change a ") + ToString(type) + " analysis: ";

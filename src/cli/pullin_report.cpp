@@ -1,12 +1,10 @@
 #include "pullin_report.hpp"
 
 #include <chrono>
-#include <optional>
 
 #include "cosmems/analysis/pullin_analysis.hpp"
-#include "cosmems/beam/stretching_force.hpp"
-#include "cosmems/core/force_sum.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
+#include "cosmems/scene/scene_forces.hpp"
 #include "csv_file.hpp"
 #include "nodal_shape.hpp"
 #include "text_format.hpp"
@@ -21,20 +19,8 @@ std::unique_ptr<PullInReport> RunPullIn(const Scene& scene) {
   const BeamModel<Dim> model(MakeBeamDescription(scene));
   const PullInOptions options = MakePullInOptions(scene);
   // The forces besides the electrode's that the scene declares; only these are evaluated.
-  const GapSpan whole{options.electrode.gap, 0.0, scene.structure.length};
-  ForceSum others;
-  std::optional<StretchingForce<Dim>> stretching;
-  if (scene.model.theory == Theory::kStretching) others.Add(stretching.emplace(model));
-  std::optional<GapForce<Dim, CasimirPressure>> casimir;
-  if (scene.effects.casimir && scene.effects.casimir->enabled) {
-    others.Add(casimir.emplace(model, CasimirPressure{}, whole));
-  }
-  std::optional<GapForce<Dim, VanDerWaalsPressure>> van_der_waals;
-  const std::optional<VanDerWaalsEffect>& vdw = scene.effects.van_der_waals;
-  if (vdw && vdw->enabled) {
-    others.Add(van_der_waals.emplace(model, VanDerWaalsPressure{*vdw->hamaker}, whole));
-  }
-  const PullInResult result = SolvePullIn(model, options, others.Empty() ? nullptr : &others);
+  SceneForces<Dim> others(model, scene);
+  const PullInResult result = SolvePullIn(model, options, others.All());
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.status;

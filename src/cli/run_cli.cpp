@@ -13,6 +13,7 @@
 #include "cosmems/scene/scene_loader.hpp"
 #include "modal_report.hpp"
 #include "pullin_report.hpp"
+#include "release_report.hpp"
 #include "static_report.hpp"
 #include "transient_report.hpp"
 
@@ -52,6 +53,7 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kPullin:
       return internal::PullInReport::Run(scene);
     case AnalysisType::kRelease:
+      return internal::ReleaseReport::Run(scene);
     case AnalysisType::kHaptic:
       break;
   }

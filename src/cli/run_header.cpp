@@ -19,8 +19,8 @@ void RunHeader::WarnIfThroughSubstrate(const std::string& subject, double distan
   if (!gap || distance < *gap) return;
   warnings.push_back(subject + " " + Scientific(distance) +
                      " m toward the substrate, at least the gap of " + Significant(*gap) +
-                     " m: it passes through the substrate (contact is not modelled in this "
-                     "version)");
+                     " m: it passes through the substrate (declare [effects.contact] to stop it "
+                     "there)");
 }
 
 void RunHeader::AddJson(nlohmann::ordered_json& json) const {

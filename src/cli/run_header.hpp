@@ -27,7 +27,7 @@ struct RunHeader {
   static RunHeader Start(const Scene& scene);
 
   /// Warns that a linear result reaches the substrate: `subject` ("the tip moves", say) went
-  /// `distance` m toward it, at least the `gap`. Contact is not modelled in this version.
+  /// `distance` m toward it, at least the `gap`: a scene without contact lets it pass.
   void WarnIfThroughSubstrate(const std::string& subject, double distance,
                               const std::optional<double>& gap);
 

@@ -2,14 +2,15 @@
 
 #include <chrono>
 
+#include "contact_report.hpp"
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
-#include "cosmems/beam/stretching_force.hpp"
 #include "cosmems/rod/cosserat_static_solver.hpp"
 #include "cosmems/rod/rod_field.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
+#include "cosmems/scene/scene_forces.hpp"
 #include "csv_file.hpp"
 #include "nodal_shape.hpp"
 #include "text_format.hpp"
@@ -22,33 +23,74 @@ std::vector<double> ToJson(const Eigen::Vector3d& v) {
   return {v.x() + 0.0, v.y() + 0.0, v.z() + 0.0};
 }
 
+// The statics of the scene's forces: the loads and the surface pressures ramped together from
+// the unloaded beam. A ramp that stops short of its full value met a fold: no equilibrium is left
+// short of the substrate, the beam has collapsed; with contact, the equilibrium lying on the
+// substrate is then solved for from the beam pressed down all along (`resting` says whether it
+// was found; if not, the last stable state is returned).
+template <int Dim>
+NonlinearStaticSolution SolveWithForces(const BeamModel<Dim>& model, SceneForces<Dim>& forces,
+                                        const LoadCase& loads, bool& collapsed, bool& resting) {
+  ForceSum* pressures = forces.pressures().Empty() ? nullptr : &forces.pressures();
+  NonlinearStaticSolution out =
+      SolveNonlinearStatic(model, forces.structural(), loads, {}, pressures);
+  collapsed = pressures && out.status != Status::kOk;
+  resting = false;
+  if (!collapsed || !forces.contact()) return out;
+  NonlinearStaticOptions pressed;
+  pressed.start = forces.contact()->PressedDisplacement();
+  NonlinearStaticSolution down = SolveNonlinearStatic(model, *forces.All(), loads, pressed);
+  resting = down.status == Status::kOk;
+  return resting ? down : out;
+}
+
 template <int Dim>
 std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   RunHeader header = RunHeader::Start(scene);
   const LoadCase loads = MakeLoadCase(scene);
   const auto start = std::chrono::steady_clock::now();
   const BeamModel<Dim> model(MakeBeamDescription(scene));
-  const bool stretching = scene.model.theory == Theory::kStretching;
+  SceneForces<Dim> forces(model, scene);
   StaticSolution solution;
-  double stretched = 0.0;  // N - N0 of a stretching beam, uniform along it (internal units)
-  if (stretching) {
-    StretchingForce<Dim> force(model);
-    const NonlinearStaticSolution nonlinear = SolveNonlinearStatic(model, force, loads);
+  StaticResults results;
+  double load_factor = 1.0;
+  bool resting = false;
+  if (forces.Empty()) {
+    solution = SolveStatic(model, loads);
+  } else {
+    const NonlinearStaticSolution nonlinear =
+        SolveWithForces(model, forces, loads, results.collapsed, resting);
     solution.status = nonlinear.status;
     solution.displacement = nonlinear.displacement;
-    stretched = force.AxialForce(nonlinear.displacement) - model.AxialLoad();
-  } else {
-    solution = SolveStatic(model, loads);
+    load_factor = nonlinear.load_factor;
+    // Collapsed and not resting on the substrate: the last stable state is reported.
+    if (results.collapsed && !resting) solution.status = Status::kOk;
   }
+  // N - N0 of a stretching beam, uniform along it (internal units).
+  const double stretched =
+      forces.stretching() && solution.status == Status::kOk
+          ? forces.stretching()->AxialForce(solution.displacement) - model.AxialLoad()
+          : 0.0;
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = solution.status;
   header.dofs = model.FreeDofCount();
 
-  StaticResults results;
   results.gap = scene.structure.gap;
+  if (forces.contact() && (!results.collapsed || resting)) {
+    results.contact = forces.contact()->Summary();
+  }
   if (solution.status != Status::kOk) {
     return std::make_unique<StaticReport>(std::move(header), std::move(results));
+  }
+  if (results.collapsed && !resting) {
+    header.warnings.push_back(
+        "collapsed: no equilibrium short of the substrate beyond " +
+        Significant(100.0 * load_factor, 4) +
+        " % of the loads and surface forces; the fields are those of the last stable state " +
+        (forces.contact() ? "(Newton from the beam pressed onto the substrate did not find it "
+                            "resting there)"
+                          : "(declare [effects.contact] for the beam lying on the substrate)"));
   }
   const BeamField<Dim> field(model, solution.displacement);
   const double length = scene.structure.length;
@@ -63,9 +105,11 @@ std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
   results.max_stress_pa = field.MaxStress(stretched_n);
   results.axial_force_n = field.AxialForce(0) + stretched_n;
   results.nodes = WithNodePositions(model.NodeX(), model.units().length, field.AtNodes());
-  header.WarnIfThroughSubstrate(
-      stretching ? "the solution deflects" : "the linear solution deflects", results.max_deflection,
-      results.gap);
+  if (!forces.contact()) {
+    header.WarnIfThroughSubstrate(
+        forces.Empty() ? "the linear solution deflects" : "the solution deflects",
+        results.max_deflection, results.gap);
+  }
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
 
@@ -118,6 +162,8 @@ void StaticReport::AddResults(nlohmann::ordered_json& json) const {
   json["max_deflection"] = results_.max_deflection;
   json["max_stress_pa"] = results_.max_stress_pa;
   json["axial_force_n"] = results_.axial_force_n;
+  json["collapsed"] = results_.collapsed;
+  if (results_.contact) json["contact"] = ContactJson(*results_.contact);
 }
 
 void StaticReport::PrintResults(std::ostream& out) const {
@@ -133,6 +179,8 @@ void StaticReport::PrintResults(std::ostream& out) const {
   out << "\n";
   out << "max stress            " << Scientific(results_.max_stress_pa) << " Pa\n";
   out << "axial force           " << Scientific(results_.axial_force_n) << " N\n";
+  if (results_.collapsed) out << "collapsed             snapped onto the substrate\n";
+  if (results_.contact) PrintContact(out, *results_.contact);
 }
 
 void StaticReport::WriteFiles(const std::filesystem::path& directory) const {

@@ -6,6 +6,7 @@
 
 #include "analysis_report.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/surface/contact_state.hpp"
 
 namespace cosmems::internal {
 
@@ -18,7 +19,9 @@ struct StaticResults {
   double max_stress_pa = 0.0;
   double axial_force_n = 0.0;  ///< in the first element, tension > 0
   std::optional<double> gap;   ///< m, the scene's
-  Eigen::MatrixXd nodes;       ///< one row per node: x, ux, uy, uz (m), rx, ry, rz (rad)
+  bool collapsed = false;      ///< no equilibrium short of the substrate (surface forces)
+  std::optional<ContactSummary> contact;  ///< with contact declared
+  Eigen::MatrixXd nodes;                  ///< one row per node: x, ux, uy, uz (m), rx, ry, rz (rad)
 };
 
 /// Linear statics: the JSON fields of SCENES.md and deflection.csv.

@@ -1,11 +1,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "analysis_report.hpp"
 #include "cosmems/analysis/step_timing.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/surface/contact_state.hpp"
 
 namespace cosmems::internal {
 
@@ -27,6 +29,8 @@ struct TransientResults {
   double max_abs_uy = 0.0;     ///< m: largest |uy| at the output point
   std::vector<double> time_s;  ///< the recorded history
   std::vector<double> uy_m;
+  std::optional<ContactSummary> contact;  ///< at the end, with contact declared
+  ContactEvents contact_events;
 };
 
 /// A linear transient run: the JSON fields of SCENES.md and history.csv.

@@ -157,7 +157,12 @@ bool HasEffect(const TomlFieldReader& r, const std::string& name,
 
 std::optional<ContactEffect> ReadContact(const TomlFieldReader& r) {
   ContactEffect c;
-  if (!HasEffect(r, "contact", {"enabled"}, c.enabled)) return std::nullopt;
+  if (!HasEffect(r, "contact", {"enabled", "separation", "tolerance", "proximity"}, c.enabled)) {
+    return std::nullopt;
+  }
+  c.separation = r.OptionalNonNegative("effects.contact.separation");
+  c.tolerance = r.OptionalPositive("effects.contact.tolerance");
+  c.proximity = r.OptionalPositive("effects.contact.proximity");
   return c;
 }
 
@@ -372,52 +377,80 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
             "false)");
 }
 
-// A pull-in needs the substrate and its electrode; the surface forces it may add need their
-// parameters.
-void CheckPullin(const TomlFieldReader& r, const Scene& scene) {
-  if (scene.analysis.type != AnalysisType::kPullin) return;
+// The effects that act through the substrate, and what each analysis does with them: a pull-in
+// needs the electrode; contact and stiction act in static, transient and release analyses; every
+// surface effect needs the gap and its parameters, and the beam theories with a Newton path that
+// carries them (not the Cosserat rod, nor modal or explicit stepping).
+void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
+  const SceneEffects& e = scene.effects;
+  const bool contact = (e.contact && e.contact->enabled) || (e.stiction && e.stiction->enabled);
+  const bool pressure = (e.electrostatic && e.electrostatic->enabled) ||
+                        (e.casimir && e.casimir->enabled) ||
+                        (e.van_der_waals && e.van_der_waals->enabled);
+  const AnalysisType type = scene.analysis.type;
+  if (type == AnalysisType::kPullin) {
+    r.Require(scene.structure.gap.has_value(), "structure.gap",
+              "analysis.type = \"pullin\" needs the substrate: give its gap");
+    r.Require(e.electrostatic && e.electrostatic->enabled, "effects.electrostatic",
+              "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic]");
+    r.Require(!contact, e.stiction && e.stiction->enabled ? "effects.stiction" : "effects.contact",
+              "not used by analysis.type = \"pullin\", which stops at the fold before contact "
+              "(remove the table or set enabled = false)");
+  }
+  if (type == AnalysisType::kRelease) {
+    r.Require(contact, "effects.stiction",
+              "analysis.type = \"release\" lets the beam go from the substrate: declare "
+              "[effects.stiction] (or [effects.contact])");
+  }
+  if (!contact && !pressure) return;
+  const char* first =
+      contact ? (e.contact && e.contact->enabled ? "effects.contact" : "effects.stiction")
+              : (e.electrostatic && e.electrostatic->enabled ? "effects.electrostatic"
+                 : e.casimir && e.casimir->enabled           ? "effects.casimir"
+                                                             : "effects.van_der_waals");
+  r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling, first,
+            std::string("not available for analysis.type = \"") + ToString(type) +
+                "\", which linearises about the straight beam (remove the table or set enabled = "
+                "false)");
   r.Require(scene.structure.gap.has_value(), "structure.gap",
-            "analysis.type = \"pullin\" needs the substrate: give its gap");
-  const std::optional<ElectrostaticEffect>& electrostatic = scene.effects.electrostatic;
-  r.Require(electrostatic && electrostatic->enabled, "effects.electrostatic",
-            "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic]");
-  const std::optional<VanDerWaalsEffect>& vdw = scene.effects.van_der_waals;
+            std::string(first) + " acts through the substrate: give its gap");
+  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
+            std::string(first) +
+                " is available for the \"linear\" and \"stretching\" theories, "
+                "not \"cosserat\"");
+  const std::optional<StictionEffect>& stiction = e.stiction;
+  r.Require(!stiction || !stiction->enabled || stiction->adhesion_energy.value_or(0.0) > 0.0,
+            "effects.stiction.adhesion_energy",
+            "needs the work of adhesion (J/m^2, > 0), e.g. adhesion_energy = 0.02");
+  const std::optional<VanDerWaalsEffect>& vdw = e.van_der_waals;
   r.Require(!vdw || !vdw->enabled || vdw->hamaker.has_value(), "effects.van_der_waals",
             "needs its hamaker constant (J), e.g. hamaker = 1e-19");
+  const std::optional<ElectrostaticEffect>& electrostatic = e.electrostatic;
+  r.Require(type == AnalysisType::kPullin || !electrostatic || !electrostatic->enabled ||
+                electrostatic->voltage.has_value(),
+            "effects.electrostatic.voltage",
+            std::string("needs the voltage (V) for analysis.type = \"") + ToString(type) + "\"");
+  if (e.contact && e.contact->separation && scene.structure.gap) {
+    r.Require(*e.contact->separation < 0.5 * *scene.structure.gap, "effects.contact.separation",
+              "must be less than half the gap");
+  }
+  if (type != AnalysisType::kTransient) return;
+  r.Require(scene.analysis.integrator != Integrator::kModal &&
+                scene.analysis.integrator != Integrator::kCentralDifference,
+            "analysis.integrator",
+            std::string(first) +
+                " is solved by Newton: it needs an implicit Newmark-family "
+                "integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
 }
 
 // What the schema describes but this version cannot simulate is refused, never ignored. Each
 // later feature removes its line here.
 void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
   const std::string unavailable = "not available in this version";
-  const AnalysisType type = scene.analysis.type;
-  r.Require(
-      type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-          type == AnalysisType::kTransient || type == AnalysisType::kBuckling ||
-          type == AnalysisType::kPullin,
-      "analysis.type",
-      unavailable + " (available: \"static\", \"modal\", \"buckling\", \"transient\", \"pullin\")");
-  const SceneEffects& e = scene.effects;
-  // The surface pressures act in pull-in analyses so far; contact and stiction nowhere yet.
-  struct Effect {
-    const char* name;
-    bool enabled;
-    bool available;
-    const char* where;
-  };
-  const bool pullin = type == AnalysisType::kPullin;
-  const char* beyond_pullin = " beyond analysis.type = \"pullin\"";
-  const std::array<Effect, 5> effects = {
-      {{"contact", e.contact && e.contact->enabled, false, ""},
-       {"stiction", e.stiction && e.stiction->enabled, false, ""},
-       {"electrostatic", e.electrostatic && e.electrostatic->enabled, pullin, beyond_pullin},
-       {"casimir", e.casimir && e.casimir->enabled, pullin, beyond_pullin},
-       {"van_der_waals", e.van_der_waals && e.van_der_waals->enabled, pullin, beyond_pullin}}};
-  for (const Effect& effect : effects) {
-    r.Require(!effect.enabled || effect.available, std::string("effects.") + effect.name,
-              "the effect is " + unavailable + effect.where +
-                  " (remove the table or set enabled = false)");
-  }
+  r.Require(scene.analysis.type != AnalysisType::kHaptic, "analysis.type",
+            unavailable +
+                " (available: \"static\", \"modal\", \"buckling\", \"transient\", "
+                "\"pullin\", \"release\")");
   r.Require(!scene.device, "device",
             unavailable + " (it drives the haptic analysis, not built yet)");
 }
@@ -440,7 +473,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   CheckTransient(r, scene);
   CheckStretching(r, scene);
   CheckCosserat(r, scene);
-  CheckPullin(r, scene);
+  CheckSurface(r, scene);
   RefuseUnavailable(r, scene);
   return scene;
 }

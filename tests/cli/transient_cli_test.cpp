@@ -282,7 +282,7 @@ TEST(TransientCliTest, WarnsWhenTheTipPassesThroughTheSubstrate) {
   const std::string warning = json["warnings"][0];
   ExpectContains(warning, "the tip moves 1.18");
   ExpectContains(warning, "toward the substrate, at least the gap of 2e-06 m");
-  ExpectContains(warning, "contact is not modelled in this version");
+  ExpectContains(warning, "declare [effects.contact] to stop it there");
 }
 
 TEST(TransientCliTest, WarnsWhenThereIsNothingToMoveTheBeam) {

@@ -36,8 +36,18 @@ inline void ExpectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.loads.time_function->ramp_time, b.loads.time_function->ramp_time);
     EXPECT_EQ(a.loads.time_function->frequency, b.loads.time_function->frequency);
   }
-  EXPECT_EQ(a.effects.contact.has_value(), b.effects.contact.has_value());
-  EXPECT_EQ(a.effects.stiction.has_value(), b.effects.stiction.has_value());
+  ASSERT_EQ(a.effects.contact.has_value(), b.effects.contact.has_value());
+  if (a.effects.contact) {
+    EXPECT_EQ(a.effects.contact->enabled, b.effects.contact->enabled);
+    EXPECT_EQ(a.effects.contact->separation, b.effects.contact->separation);
+    EXPECT_EQ(a.effects.contact->tolerance, b.effects.contact->tolerance);
+    EXPECT_EQ(a.effects.contact->proximity, b.effects.contact->proximity);
+  }
+  ASSERT_EQ(a.effects.stiction.has_value(), b.effects.stiction.has_value());
+  if (a.effects.stiction) {
+    EXPECT_EQ(a.effects.stiction->enabled, b.effects.stiction->enabled);
+    EXPECT_EQ(a.effects.stiction->adhesion_energy, b.effects.stiction->adhesion_energy);
+  }
   EXPECT_EQ(a.effects.electrostatic.has_value(), b.effects.electrostatic.has_value());
   EXPECT_EQ(a.effects.casimir.has_value(), b.effects.casimir.has_value());
   EXPECT_EQ(a.effects.van_der_waals.has_value(), b.effects.van_der_waals.has_value());

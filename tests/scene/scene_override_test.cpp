@@ -82,10 +82,8 @@ TEST(SceneOverrideTest, BlamesTheCommandLineForTheValuesItWrote) {
                 .rfind("--set: structure.lenght = 1e-04: unknown key (expected kind, length,", 0),
             0u);
   EXPECT_EQ(
-      Message({"effects.casimir.enabled=true"})
-          .rfind("--set: effects.casimir = { enabled = true }: the effect is not available in "
-                 "this version",
-                 0),
+      Message({"effects.stiction.adhesion_energy=0.0"})
+          .rfind("--set: effects.stiction.adhesion_energy = 0.0: needs the work of adhesion", 0),
       0u);
 }
 

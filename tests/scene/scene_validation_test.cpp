@@ -286,23 +286,43 @@ INSTANTIATE_TEST_SUITE_P(
 
 INSTANTIATE_TEST_SUITE_P(
     NotYetAvailable, SceneValidationTest,
-    ::testing::Values(BadScene{"release", With("analysis.type", "\"release\""),
-                               "analysis.type = \"release\"", kUnavailable},
-                      BadScene{"haptic", With("analysis.type", "\"haptic\""),
+    ::testing::Values(BadScene{"haptic", With("analysis.type", "\"haptic\""),
                                "analysis.type = \"haptic\"", kUnavailable},
-                      BadScene{"contact", With("effects.contact", "{}"), "effects.contact = {}",
-                               kUnavailable},
-                      BadScene{"stiction", With("effects.stiction", "{ adhesion_energy = 0.02 }"),
-                               "effects.stiction = { adhesion_energy = 0.02 }", kUnavailable},
-                      BadScene{"electrostatic", With("effects.electrostatic.voltage", "10.0"),
-                               "effects.electrostatic = { voltage = 10.0 }",
-                               kUnavailable + " beyond analysis.type = \"pullin\""},
-                      BadScene{"casimir", With("effects.casimir.enabled", "true"),
-                               "effects.casimir = { enabled = true }", kUnavailable},
-                      BadScene{"van_der_waals", With("effects.van_der_waals.hamaker", "1e-19"),
-                               "effects.van_der_waals = { hamaker = 1e-19 }", kUnavailable},
                       BadScene{"device", With("device.backend", "\"scripted\""),
                                "device = { backend = \"scripted\" }", kUnavailable}),
+    CaseName);
+
+// Contact, stiction and the surface pressures: what each needs, and where they act.
+INSTANTIATE_TEST_SUITE_P(
+    SurfaceEffects, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"release_without_stiction", With("analysis.type", "\"release\""),
+                 "effects.stiction", "declare [effects.stiction]"},
+        BadScene{"stiction_without_adhesion", With("effects.stiction.enabled", "true"),
+                 "effects.stiction.adhesion_energy", "needs the work of adhesion"},
+        BadScene{"zero_adhesion", With("effects.stiction.adhesion_energy", "0.0"),
+                 "effects.stiction.adhesion_energy = 0.0", "needs the work of adhesion"},
+        BadScene{"contact_without_gap", With("effects.contact", "{}").Remove("structure.gap"),
+                 "structure.gap", "effects.contact acts through the substrate"},
+        BadScene{"voltage_missing", With("effects.electrostatic.fringing", "false"),
+                 "effects.electrostatic.voltage", "needs the voltage (V)"},
+        BadScene{"hamaker_missing", With("effects.van_der_waals.enabled", "true"),
+                 "effects.van_der_waals = { enabled = true }", "needs its hamaker constant"},
+        BadScene{"contact_in_modal",
+                 With("effects.contact", "{}").Set("analysis.type", "\"modal\""),
+                 "effects.contact = {}", "not available for analysis.type = \"modal\""},
+        BadScene{"casimir_in_buckling",
+                 With("effects.casimir", "{}").Set("analysis.type", "\"buckling\""),
+                 "effects.casimir = {}", "linearises about the straight beam"},
+        BadScene{"contact_with_cosserat",
+                 With("effects.contact", "{}")
+                     .Set("model.theory", "\"cosserat\"")
+                     .Set("model.dimension", "3"),
+                 "model.theory = \"cosserat\"", "not \"cosserat\""},
+        BadScene{"separation_too_large", With("effects.contact.separation", "1.5e-6"),
+                 "effects.contact.separation = 1.5e-06", "less than half the gap"},
+        BadScene{"negative_tolerance", With("effects.contact.tolerance", "-1e-9"),
+                 "effects.contact.tolerance = -1e-09", "must be positive"}),
     CaseName);
 
 // The cantilever as a pull-in analysis over its 2 um gap.

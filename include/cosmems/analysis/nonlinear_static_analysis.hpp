@@ -22,6 +22,9 @@ struct NonlinearStaticOptions {
   double min_load_step = 1.0 / 1024.0;
   /// Backtracking halvings of a Newton correction before it is taken whole anyway.
   int max_line_search = 8;
+  /// Where the first load step's Newton starts (reduced, internal units); empty: the unloaded
+  /// beam. A beam pressed onto the substrate starts there, say.
+  Eigen::VectorXd start;
 };
 
 struct NonlinearStaticSolution {
@@ -32,7 +35,9 @@ struct NonlinearStaticSolution {
   int load_steps = 0;            ///< accepted load steps
 };
 
-/// Statics with a nonlinear internal force: K d + r(d) = lambda f, lambda from 0 to 1.
+/// Statics with a nonlinear internal force: K d + r(d) + lambda r_s(d) = lambda f, lambda from
+/// 0 to 1, r_s an optional stateless force ramped with the loads (surface pressures, which leave no
+/// unloaded equilibrium to start from; a fold of the ramp stops the load steps there).
 ///
 /// Adaptive load stepping: a step that Newton solves doubles the next one (up to what remains),
 /// one that fails is retried at half the size from the last converged state. Newton uses the
@@ -42,13 +47,17 @@ struct NonlinearStaticSolution {
 template <int Dim>
 NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, NonlinearForce& force,
                                              const LoadCase& loads,
-                                             const NonlinearStaticOptions& options = {}) {
+                                             const NonlinearStaticOptions& options = {},
+                                             NonlinearForce* ramped = nullptr) {
   const int n = model.FreeDofCount();
   const SymmetricBandMatrix& k = model.Stiffness();
   const Eigen::VectorXd f = AssembleLoads(model, loads);
   NonlinearStaticSolution out;
   out.displacement = Eigen::VectorXd::Zero(n);
+  if (options.start.size() == n) out.displacement = options.start;
   ForceTangent tangent(n, k.bandwidth());
+  ForceTangent ramped_tangent(n, k.bandwidth());
+  Eigen::VectorXd rs = Eigen::VectorXd::Zero(n);
   SymmetricBandMatrix jacobian(n, k.bandwidth());
   BandRankOneCholesky factor;
   Eigen::VectorXd d(n), r(n), residual(n), step(n), trial(n), kd(n);
@@ -58,6 +67,13 @@ NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, Nonlin
     r.setZero();
     tangent.Clear();
     if (!force.Evaluate(x, r, tangent)) return false;
+    if (ramped) {
+      rs.setZero();
+      ramped_tangent.Clear();
+      if (!ramped->Evaluate(x, rs, ramped_tangent)) return false;
+      r += lambda * rs;
+      tangent.band().mutable_data() += lambda * ramped_tangent.band().data();
+    }
     k.Multiply(x, kd);
     residual = kd + r - lambda * f;
     reference = kd.norm() + r.norm() + lambda * f.norm();
@@ -67,30 +83,39 @@ NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, Nonlin
   auto newton = [&](double lambda) {
     double reference = 0.0;
     if (!evaluate(d, lambda, reference)) return Status::kNonFinite;
+    int settles = 0;
     for (int iteration = 1; iteration <= options.newton.max_iterations; ++iteration) {
       ++out.iterations;
-      if (residual.norm() <= options.newton.residual_tolerance * reference) return Status::kOk;
-      jacobian.mutable_data() = k.data() + tangent.band().data();
-      const Status factored =
-          factor.Compute(jacobian, tangent.rank_one_scale(), tangent.rank_one_vector());
-      if (factored != Status::kOk) return factored;
-      step = -residual;
-      factor.SolveInPlace(step);
-      const double norm = residual.norm();
-      double alpha = 1.0;
-      for (int cut = 0;; ++cut) {
-        trial = d + alpha * step;
-        if ((evaluate(trial, lambda, reference) && residual.norm() < (1.0 - 1e-4 * alpha) * norm) ||
-            cut == options.max_line_search) {
-          break;
+      bool converged = residual.norm() <= options.newton.residual_tolerance * reference;
+      if (!converged) {
+        jacobian.mutable_data() = k.data() + tangent.band().data();
+        const Status factored =
+            factor.Compute(jacobian, tangent.rank_one_scale(), tangent.rank_one_vector());
+        if (factored != Status::kOk) return factored;
+        step = -residual;
+        factor.SolveInPlace(step);
+        const double norm = residual.norm();
+        double alpha = 1.0;
+        for (int cut = 0;; ++cut) {
+          trial = d + alpha * step;
+          if ((evaluate(trial, lambda, reference) &&
+               residual.norm() < (1.0 - 1e-4 * alpha) * norm) ||
+              cut == options.max_line_search) {
+            break;
+          }
+          alpha *= 0.5;
         }
-        alpha *= 0.5;
+        d = trial;
+        if (!residual.allFinite()) return Status::kNonFinite;
+        converged = alpha * step.norm() <= options.newton.increment_tolerance * d.norm();
       }
-      d = trial;
-      if (!residual.allFinite()) return Status::kNonFinite;
-      if (alpha * step.norm() <= options.newton.increment_tolerance * d.norm()) {
-        return Status::kOk;
-      }
+      if (!converged) continue;
+      // Converged for the force's present state; a force that changes it there starts Newton
+      // afresh.
+      if (force.Settle(d)) return Status::kOk;
+      if (++settles > options.newton.max_settles) return Status::kNotConverged;
+      iteration = 0;
+      if (!evaluate(d, lambda, reference)) return Status::kNonFinite;
     }
     return Status::kNotConverged;
   };
@@ -103,11 +128,13 @@ NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, Nonlin
     d = out.displacement;
     const Status status = newton(target);
     if (status == Status::kOk) {
+      force.Commit(d);
       out.displacement = d;
       lambda = target;
       ++out.load_steps;
       increment = std::min(2.0 * increment, 1.0 - lambda);
     } else {
+      force.Revert();
       increment *= 0.5;
       if (increment < options.min_load_step) {
         out.status = status;

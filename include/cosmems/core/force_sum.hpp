@@ -21,6 +21,21 @@ class ForceSum final : public NonlinearForce {
     return true;
   }
 
+  bool Settle(const Eigen::VectorXd& d) override {
+    bool settled = true;
+    for (NonlinearForce* f : forces_) settled = f->Settle(d) && settled;
+    return settled;
+  }
+  void Commit(const Eigen::VectorXd& d) override {
+    for (NonlinearForce* f : forces_) f->Commit(d);
+  }
+  void Revert() override {
+    for (NonlinearForce* f : forces_) f->Revert();
+  }
+  void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
+    for (NonlinearForce* f : forces_) f->ProjectMotion(d, v, a);
+  }
+
  private:
   std::vector<NonlinearForce*> forces_;
 };

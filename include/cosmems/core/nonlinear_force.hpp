@@ -58,6 +58,24 @@ class NonlinearForce {
   /// part if the force needs one), both in the model's internal units.
   virtual bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
                         ForceTangent& tangent) = 0;
+
+  // A force with an internal state (contact multipliers, stuck nodes) takes part in the solvers'
+  // protocol below; a plain force r(d) keeps the defaults.
+
+  /// Newton has converged on d. A force whose state must change there (a multiplier update that
+  /// cuts a penetration, a node that peels off) changes it and returns false: the solver then
+  /// iterates again from d. Allocates nothing.
+  virtual bool Settle(const Eigen::VectorXd& /*d*/) { return true; }
+  /// The solver accepted d (a time step, a load step): the state becomes the one Revert() returns
+  /// to, and events are counted.
+  virtual void Commit(const Eigen::VectorXd& /*d*/) {}
+  /// The solver abandoned the states Settle() reached since the last Commit().
+  virtual void Revert() {}
+  /// A time step ended at d with velocity v and acceleration a: a constraint removes the motion
+  /// it forbids (a node driven onto the substrate stops there: an inelastic impact). Allocates
+  /// nothing.
+  virtual void ProjectMotion(const Eigen::VectorXd& /*d*/, Eigen::VectorXd& /*v*/,
+                             Eigen::VectorXd& /*a*/) {}
 };
 
 }  // namespace cosmems

@@ -6,6 +6,7 @@
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/core/material.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/damping_model.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/load_time_function.hpp"
@@ -41,6 +42,16 @@ GeneralizedAlphaParameters MakeIntegratorParameters(const SceneAnalysis& analysi
 /// integrator (model.modes modes for "modal"), initial state, time function, damping, and uy
 /// recorded at the free end of a cantilever (x = length) or the middle of a bridge (length / 2).
 TransientOptions MakeTransientOptions(const Scene& scene);
+
+/// Whether the scene declares contact with the substrate: [effects.contact], or
+/// [effects.stiction], which implies it (each unless enabled = false).
+bool HasContact(const Scene& scene);
+
+/// The contact of a validated scene with contact: its gap, stiction with the work of adhesion,
+/// and the contact table's separation (0 by default, or a hundredth of the gap when a surface
+/// pressure is declared: the pressures grow without bound as the faces close), tolerance and
+/// proximity (the core's defaults when absent).
+ContactOptions MakeContactOptions(const Scene& scene);
 
 /// The pull-in analysis of a validated pullin scene: its electrode (the whole beam unless given),
 /// fringing, the travel imposed at the tip or midspan, and voltage_max as the search's bound.

@@ -12,6 +12,9 @@ namespace cosmems {
 /// [effects.contact]: unilateral contact with the substrate.
 struct ContactEffect {
   bool enabled = true;
+  std::optional<double> separation;  ///< m: closest approach of the faces in contact, >= 0
+  std::optional<double> tolerance;   ///< m: penetration accepted, > 0
+  std::optional<double> proximity;   ///< m: gap below which the beam is "near", > 0
 };
 
 /// [effects.stiction]: adhesion to the substrate; implies contact.

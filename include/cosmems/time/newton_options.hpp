@@ -20,6 +20,10 @@ struct NewtonOptions {
   double reuse_contraction = 1e-3;
   /// A failed step is retried as two half steps, recursively, at most this deep (2^-8 dt).
   int max_cuts = 8;
+  /// State changes a force may ask for once Newton has converged (a contact multiplier updated, a
+  /// node peeled off: NonlinearForce::Settle), each followed by a fresh set of iterations, in one
+  /// step or one load step.
+  int max_settles = 200;
 };
 
 }  // namespace cosmems

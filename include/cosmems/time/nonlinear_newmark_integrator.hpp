@@ -19,7 +19,12 @@ namespace cosmems {
 
 /// The nonlinear path of the Newmark family: M a + C v + K d + r(d) = f, generalised-alpha
 /// balance, Newton on d_(n+1) with the consistent tangent
-///   J = (1-am)/(beta dt^2) M + (1-af) gamma/(beta dt) C + (1-af) (K + dr/dd (d_(n+1-af))).
+///   J = (1-am)/(beta dt^2) M + (1-af) gamma/(beta dt) C + (1-af) (K + dr/dd (d_(n+1))).
+/// The nonlinear force enters the balance interpolated, (1-af) r(d_(n+1)) + af r(d_n), rather
+/// than evaluated at the interpolated state (Erlicher, Bonaventura & Bursi 2002: the same order
+/// and dissipation): a constraint force, contact, then holds the state at the end of the step,
+/// where an evaluation at d_(n+1-af) would let the end overshoot the substrate by af/(1-af) of
+/// the last approach.
 /// A step whose Newton iterations fail (no convergence, non-finite values, a force outside its
 /// domain) is retried as two half steps, recursively up to NewtonOptions::max_cuts; if even
 /// that fails, the state is left at the start of the step and the status says why. Steps
@@ -79,7 +84,7 @@ class NonlinearNewmarkIntegrator {
     (void)factor_.Compute(mass, 1.0, Eigen::VectorXd::Zero(n));
     for (Eigen::VectorXd* v :
          {&d_, &v_, &a_, &f_, &d_new_, &a_new_, &d_mid_, &v_mid_, &residual_, &work_, &r_, &f_mid_,
-          &d_star_, &v_star_, &d_save_, &v_save_, &a_save_}) {
+          &d_star_, &v_star_, &d_save_, &v_save_, &a_save_, &r_start_, &r_save_}) {
       v->setZero(n);
     }
   }
@@ -96,6 +101,8 @@ class NonlinearNewmarkIntegrator {
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
+    r_start_ = r_;
+    force_.Commit(d_);
     return InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0 - r_, a_);
   }
 
@@ -111,6 +118,7 @@ class NonlinearNewmarkIntegrator {
       d_ = d_save_;
       v_ = v_save_;
       a_ = a_save_;
+      r_start_ = r_save_;
       time_ = time_save_;
     }
     f_target_ = nullptr;
@@ -132,11 +140,13 @@ class NonlinearNewmarkIntegrator {
   Status Advance(double from, double to, int depth) {
     const Status status = Substep(from, to);
     if (status == Status::kOk) return status;
+    force_.Revert();
     if (depth >= options_.max_cuts) return status;
     if (last_cuts_ == 0) {  // a failed sub-step leaves the state alone: this is the step's start
       d_save_ = d_;
       v_save_ = v_;
       a_save_ = a_;
+      r_save_ = r_start_;
     }
     ++last_cuts_;
     const double mid = 0.5 * (from + to);
@@ -166,14 +176,25 @@ class NonlinearNewmarkIntegrator {
     a_new_ = ca * (d_new_ - d_star_);
     const int n = static_cast<int>(d_.size());
     double previous_norm = 0.0;
+    int settles = 0;
+    // Newton has converged for the force's present state: true if the force keeps it there;
+    // otherwise (a contact multiplier updated, a node peeled off) Newton starts afresh.
+    auto settled = [&](int& iteration) {
+      if (force_.Settle(d_new_)) return true;
+      ++settles;
+      iteration = 0;
+      factor_valid_ = false;  // the tangent changed with the state
+      return false;
+    };
     for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+      if (settles > options_.max_settles) break;
       ++last_iterations_;
       // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
       if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
       const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
       r_.setZero();
       tangent_.Clear();
-      if (!force_.Evaluate(d_mid, r_, tangent_)) return Status::kNonFinite;
+      if (!force_.Evaluate(d_new_, r_, tangent_)) return Status::kNonFinite;
       // R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for the scale.
       if (am != 0.0) {
         work_ = (1.0 - am) * a_new_ + am * a_;
@@ -199,7 +220,8 @@ class NonlinearNewmarkIntegrator {
       // R += K d_mid + r - f_mid and the sizes of the terms, in one pass over the vectors.
       double mass2 = 0.0, stiffness2 = 0.0, force2 = 0.0, norm2 = 0.0;
       for (int i = 0; i < n; ++i) {
-        const double m = residual_[i], k = work_[i], r = r_[i];
+        const double m = residual_[i], k = work_[i];
+        const double r = af != 0.0 ? (1.0 - af) * r_[i] + af * r_start_[i] : r_[i];
         const double sum = m + k + r - f_mid_[i];
         mass2 += m * m;  // M a_(n+1-am) alone unless damping was added to it above
         stiffness2 += k * k;
@@ -215,7 +237,10 @@ class NonlinearNewmarkIntegrator {
       // How much the factor's last solve cut the residual decides whether it serves again.
       if (iteration > 1) factor_contraction_ = norm / previous_norm;
       const double tolerance = options_.residual_tolerance * reference;
-      if (norm <= tolerance) return Accept(h);
+      if (norm <= tolerance) {
+        if (settled(iteration)) return Accept(h);
+        continue;
+      }
       previous_norm = norm;
       // The band part's factor is kept (for the same coefficients: a cut step changes h) while
       // its last solve cut the residual by reuse_contraction, and past the first iteration only
@@ -261,7 +286,8 @@ class NonlinearNewmarkIntegrator {
         d_new_[i] = d;
         a_new_[i] = ca * (d - d_star_[i]);
       }
-      if (std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2)) {
+      if (std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
+          settled(iteration)) {
         return Accept(h);
       }
     }
@@ -280,9 +306,12 @@ class NonlinearNewmarkIntegrator {
     const double fit = along / (0.5 * h * h * squared);
     persistence_ = std::isfinite(fit) ? std::clamp(fit, 0.0, 1.0) : 1.0;
     v_ = v_star_ + (p_.gamma * h) * a_new_;
+    force_.ProjectMotion(d_new_, v_, a_new_);
     d_.swap(d_new_);  // swaps the buffers: allocates nothing
     a_.swap(a_new_);
+    r_start_.swap(r_);  // r at the accepted state (at the last iterate, within the tolerance)
     time_ += h;
+    force_.Commit(d_);
     return Status::kOk;
   }
 
@@ -308,7 +337,7 @@ class NonlinearNewmarkIntegrator {
   double factor_cm_ = 0.0, factor_ck_ = 0.0, factor_ct_ = 0.0;
   const Eigen::VectorXd* f_target_ = nullptr;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_, f_mid_,
-      d_star_, v_star_, d_save_, v_save_, a_save_;
+      d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;
 };
 
 }  // namespace cosmems

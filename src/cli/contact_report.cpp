@@ -1,0 +1,29 @@
+#include "contact_report.hpp"
+
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+
+nlohmann::ordered_json ContactJson(const ContactSummary& contact) {
+  return {{"in_contact", contact.InContact()},
+          {"stuck", contact.Stuck()},
+          {"contact_length_m", contact.contact_length_m},
+          {"state", ToString(contact.state)},
+          {"detached_length_m", contact.detached_length_m}};
+}
+
+nlohmann::ordered_json ContactEventsJson(const ContactEvents& events) {
+  return {{"proximity_warnings", events.proximity_warnings},
+          {"contacts", events.contacts},
+          {"stuck_events", events.stuck},
+          {"releases", events.releases}};
+}
+
+void PrintContact(std::ostream& out, const ContactSummary& contact) {
+  out << "substrate             " << ToString(contact.state) << "\n";
+  out << "contact length        " << Scientific(contact.contact_length_m) << " m\n";
+  out << "detached length       " << Scientific(contact.detached_length_m)
+      << " m (free span from the first support)\n";
+}
+
+}  // namespace cosmems::internal

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "cosmems/surface/contact_state.hpp"
+
+namespace cosmems::internal {
+
+/// The beam against the substrate as every analysis with contact reports it: SCENES.md's
+/// {in_contact, stuck, contact_length_m}, and the extensions state and detached_length_m.
+nlohmann::ordered_json ContactJson(const ContactSummary& contact);
+
+/// {proximity_warnings, contacts, stuck_events, releases}.
+nlohmann::ordered_json ContactEventsJson(const ContactEvents& events);
+
+/// The summary's lines: state, contact length, detached length.
+void PrintContact(std::ostream& out, const ContactSummary& contact);
+
+}  // namespace cosmems::internal

@@ -1,0 +1,129 @@
+// Contact, stiction and the surface pressures through the CLI: the release analysis against the
+// S-shaped stuck cantilever's closed form, statics that rest on the substrate or collapse onto
+// it, a transient touchdown with its events, and the validation of the effects' keys. The
+// models' accuracy against independent solutions is held by tests/surface.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_test_support.hpp"
+#include "cosmems/scene/scene_loader.hpp"
+
+namespace cosmems {
+namespace {
+
+using testing::ExpectContains;
+using testing::InvalidInput;
+using testing::ReadLines;
+using testing::RunJson;
+using testing::TempDirectory;
+
+// s^4 = 3 E t^3 g^2 / (2 Gamma) for the scene's beam: 142 um of its 200 um. The edge of contact
+// moves node by node (2 um elements): within two of them.
+TEST(SurfaceCliTest, StictionSceneStaysStuckWithTheFreeSpanOfTheEnergyBalance) {
+  const Scene scene = LoadScene("cantilever-stiction");
+  const double span = std::pow(
+      3.0 * scene.material.young_modulus * std::pow(scene.structure.thickness, 3) *
+          std::pow(*scene.structure.gap, 2) / (2.0 * *scene.effects.stiction->adhesion_energy),
+      0.25);
+  const nlohmann::json json = RunJson({"cantilever-stiction"});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_EQ(json.at("analysis"), "release");
+  EXPECT_TRUE(json.at("stuck").get<bool>());
+  const double detached = json.at("detached_length_m").get<double>();
+  EXPECT_NEAR(detached, span, 2.0 * scene.structure.length / scene.model.elements);
+  EXPECT_NEAR(json.at("contact_length_m").get<double>(), scene.structure.length - detached, 1e-12);
+  EXPECT_EQ(json.at("contact").at("state"), "stuck");
+  EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
+}
+
+TEST(SurfaceCliTest, ShortCantileverSpringsFree) {
+  const nlohmann::json json = RunJson({"cantilever-stiction", "--set", "structure.length=120e-6"});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_FALSE(json.at("stuck").get<bool>());
+  EXPECT_EQ(json.at("contact_length_m").get<double>(), 0.0);
+  EXPECT_NEAR(json.at("detached_length_m").get<double>(), 120e-6, 1e-15);
+}
+
+TEST(SurfaceCliTest, ReleaseWritesTheShapeOnTheSubstrate) {
+  const TempDirectory dir;
+  RunJson({"cantilever-stiction", "--out", dir.path().string()});
+  const std::vector<std::string> lines = ReadLines(dir.path() / "release_shape.csv");
+  ASSERT_EQ(lines.size(), 1u + 101u);
+  const std::string tip = lines.back();
+  const double uy = std::stod(tip.substr(tip.find(',', tip.find(',') + 1) + 1));
+  EXPECT_NEAR(uy, -2e-6, 1e-9);  // lying on the substrate, within the contact tolerance
+}
+
+// A tip force of three times the one that closes the gap: the tip rests on the substrate.
+TEST(SurfaceCliTest, StaticContactStopsTheTipAtTheSubstrate) {
+  const nlohmann::json json = RunJson({"cantilever", "--set", "effects.contact={}", "--set",
+                                       "loads.tip_force=[0.0, -5.1e-6, 0.0]"});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_NEAR(json.at("tip_displacement")[1].get<double>(), -2e-6, 1e-9);
+  EXPECT_FALSE(json.at("collapsed").get<bool>());
+  EXPECT_TRUE(json.at("contact").at("in_contact").get<bool>());
+  EXPECT_FALSE(json.at("contact").at("stuck").get<bool>());
+  EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
+}
+
+// 20 V is above the cantilever's 14.6 V pull-in: no equilibrium short of the substrate; the
+// result says collapsed and gives the last stable state. 10 V holds.
+TEST(SurfaceCliTest, StaticAbovePullInCollapses) {
+  const nlohmann::json above = RunJson(
+      {"cantilever", "--set", "model.dimension=2", "--set", "effects.electrostatic.voltage=20.0"});
+  EXPECT_EQ(above.at("status"), "ok");
+  EXPECT_TRUE(above.at("collapsed").get<bool>());
+  ASSERT_EQ(above.at("warnings").size(), 1u);
+  ExpectContains(above["warnings"][0], "collapsed");
+  const nlohmann::json below = RunJson(
+      {"cantilever", "--set", "model.dimension=2", "--set", "effects.electrostatic.voltage=10.0"});
+  EXPECT_FALSE(below.at("collapsed").get<bool>());
+  EXPECT_LT(below.at("tip_displacement")[1].get<double>(), 0.0);
+  EXPECT_EQ(below.at("warnings"), nlohmann::json::array());
+}
+
+TEST(SurfaceCliTest, TouchdownTransientSticksAndIsPulledFree) {
+  const TempDirectory dir;
+  const nlohmann::json json = RunJson({"cantilever-touchdown", "--out", dir.path().string()});
+  EXPECT_EQ(json.at("status"), "ok");
+  const nlohmann::json& events = json.at("contact_events");
+  EXPECT_GE(events.at("proximity_warnings").get<int>(), 1);
+  EXPECT_GE(events.at("contacts").get<int>(), 1);
+  EXPECT_GE(events.at("stuck_events").get<int>(), 1);
+  EXPECT_GE(events.at("releases").get<int>(), 1);
+  // The tip never goes through the substrate.
+  for (const std::string& line : ReadLines(dir.path() / "history.csv")) {
+    if (line.rfind("time_s", 0) == 0) continue;
+    EXPECT_GE(std::stod(line.substr(line.find(',') + 1)), -2e-6);
+  }
+}
+
+TEST(SurfaceCliTest, EffectKeysAreValidated) {
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "effects.stiction={}"}),
+                 "effects.stiction.adhesion_energy");
+  ExpectContains(InvalidInput({"run", "cantilever-modal", "--set", "effects.contact={}"}),
+                 "effects.contact");
+  ExpectContains(InvalidInput({"run", "cantilever-large-deflection", "--set", "effects.contact={}",
+                               "--set", "structure.gap=2e-6"}),
+                 "model.theory");
+  ExpectContains(InvalidInput({"run", "cantilever-release", "--set", "effects.contact={}"}),
+                 "analysis.integrator");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "effects.electrostatic={}"}),
+                 "effects.electrostatic.voltage");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=release"}),
+                 "effects.stiction");
+  ExpectContains(InvalidInput({"run", "cantilever-pullin", "--set", "effects.contact={}"}),
+                 "effects.contact");
+  ExpectContains(
+      InvalidInput({"run", "cantilever", "--set", "effects.contact={separation=1.5e-6}"}),
+      "effects.contact.separation");
+  ExpectContains(InvalidInput({"run", "cantilever", "--set", "effects.contact={bounce=1}"}),
+                 "effects.contact.bounce");
+}
+
+}  // namespace
+}  // namespace cosmems

@@ -1,0 +1,57 @@
+// The haptic scene's steps allocate nothing: contact, stiction and the Casimir force composed at
+// compile time, through a press that makes the tip touch and stick and a pull that peels it off
+// (the multiplier updates, the compliance factorisation of the peel test and the adaptive
+// quadrature all run within the counted steps).
+#include <gtest/gtest.h>
+
+#include "allocation_counter.hpp"
+#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/surface/gap_force.hpp"
+#include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/surface/substrate_contact.hpp"
+#include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "test_beams.hpp"
+
+namespace cosmems {
+namespace {
+
+TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
+  const double length = test::kReferenceLength, gap = 2e-6;
+  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
+                                         test::ReferenceSection(), 20, 0));
+  ContactOptions contact;
+  contact.gap = gap;
+  contact.separation = 2e-8;
+  contact.stiction = true;
+  contact.adhesion_energy = 0.02;
+  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
+      SubstrateContact<2>(model, contact),
+      GapForce<2, CasimirPressure>(model, CasimirPressure{}, GapSpan{gap, 0.0, length}));
+  NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
+                                        GeneralizedAlphaParameters::FromSpectralRadius(0.0),
+                                        1e-4 / model.units().time);
+  const int n = model.FreeDofCount();
+  const int tip = model.dofs().Reduced(20, NodalDof::kUy);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  ASSERT_EQ(integrator.Initialize(f, f, f), Status::kOk);
+  const double closing = 0.845 * gap / model.units().force;  // 3 EI / L^3 times the gap
+  int step = 0;
+  Status status = Status::kOk;
+  // 40 steps down to three times the closing force, 40 up to three times it the other way.
+  EXPECT_EQ(test::AllocationsDuring(80,
+                                    [&] {
+                                      const double s = step < 40 ? -step / 40.0
+                                                                 : -1.0 + 2.0 * (step - 40) / 40.0;
+                                      f[tip] = 3.0 * closing * s;
+                                      ++step;
+                                      if (status == Status::kOk) status = integrator.Step(f);
+                                    }),
+            0);
+  EXPECT_EQ(status, Status::kOk);
+  const ContactEvents& events = forces.get<0>().events();
+  EXPECT_GE(events.stuck, 1);
+  EXPECT_GE(events.releases, 1);
+}
+
+}  // namespace
+}  // namespace cosmems
