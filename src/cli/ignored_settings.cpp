@@ -14,7 +14,7 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
   }
   const std::string unchanged = std::string(" does not change a ") + ToString(type) + " analysis: ";
   const std::optional<DampingEffect>& damping = scene.effects.damping;
-  if (damping && damping->enabled) {
+  if (IsOn(damping)) {
     warnings.push_back("effects.damping" + unchanged +
                        (type == AnalysisType::kModal
                             ? "its frequencies and modes are those of the undamped beam"

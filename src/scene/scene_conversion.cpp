@@ -51,7 +51,7 @@ LoadCase MakeLoadCase(const Scene& scene) {
 
 DampingModel MakeDampingModel(const Scene& scene) {
   const std::optional<DampingEffect>& damping = scene.effects.damping;
-  if (!damping || !damping->enabled) return {};
+  if (!IsOn(damping)) return {};
   if (damping->quality_factor) return DampingModel::QualityFactor(*damping->quality_factor);
   return DampingModel::Rayleigh((*damping->rayleigh)[0], (*damping->rayleigh)[1]);
 }
@@ -111,25 +111,17 @@ TransientOptions MakeTransientOptions(const Scene& scene) {
   return out;
 }
 
-bool HasContact(const Scene& scene) {
-  const SceneEffects& e = scene.effects;
-  return (e.contact && e.contact->enabled) || (e.stiction && e.stiction->enabled);
-}
-
 ContactOptions MakeContactOptions(const Scene& scene) {
   const SceneEffects& e = scene.effects;
   ContactOptions out;
   out.gap = *scene.structure.gap;
-  const bool pressure = (e.electrostatic && e.electrostatic->enabled) ||
-                        (e.casimir && e.casimir->enabled) ||
-                        (e.van_der_waals && e.van_der_waals->enabled);
-  out.separation = pressure ? 1e-2 * out.gap : 0.0;
-  if (e.contact && e.contact->enabled) {
+  out.separation = e.HasSurfacePressure() ? 1e-2 * out.gap : 0.0;
+  if (IsOn(e.contact)) {
     out.separation = e.contact->separation.value_or(out.separation);
     out.tolerance = e.contact->tolerance.value_or(0.0);
     out.proximity = e.contact->proximity.value_or(0.0);
   }
-  if (e.stiction && e.stiction->enabled) {
+  if (IsOn(e.stiction)) {
     out.stiction = true;
     out.adhesion_energy = *e.stiction->adhesion_energy;
   }

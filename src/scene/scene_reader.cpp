@@ -339,17 +339,25 @@ void CheckTransient(const TomlFieldReader& r, const Scene& scene) {
       "analysis.initial = \"static\" removes the loads at t = 0, so only \"step\" goes with it");
 }
 
+// What Newton solves in a transient (`subject`: a nonlinear theory or effect) needs an implicit
+// Newmark-family member: not modal propagation, not the explicit central difference.
+void RequireNewtonIntegrator(const TomlFieldReader& r, const Scene& scene,
+                             const std::string& subject) {
+  if (scene.analysis.type != AnalysisType::kTransient) return;
+  r.Require(scene.analysis.integrator != Integrator::kModal &&
+                scene.analysis.integrator != Integrator::kCentralDifference,
+            "analysis.integrator",
+            subject +
+                " is solved by Newton: it needs an implicit Newmark-family integrator "
+                "(\"newmark\", \"hht\" or \"generalized-alpha\")");
+}
+
 // Mid-plane stretching needs both ends held axially, and the Newton path of the Newmark family.
 void CheckStretching(const TomlFieldReader& r, const Scene& scene) {
   if (scene.model.theory != Theory::kStretching) return;
   r.Require(scene.structure.kind == StructureKind::kBridge, "model.theory",
             "\"stretching\" needs both ends held axially: structure.kind = \"bridge\"");
-  if (scene.analysis.type != AnalysisType::kTransient) return;
-  r.Require(scene.analysis.integrator != Integrator::kModal &&
-                scene.analysis.integrator != Integrator::kCentralDifference,
-            "analysis.integrator",
-            "model.theory = \"stretching\" is solved by Newton: it needs an implicit Newmark-"
-            "family integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
+  RequireNewtonIntegrator(r, scene, "model.theory = \"stretching\"");
 }
 
 // The Cosserat rod is a 3-D model solved by Newton: no planar form, no modes of its own, no
@@ -365,14 +373,10 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
   r.Require(scene.analysis.type != AnalysisType::kPullin, "analysis.type",
             "\"pullin\" is not available for model.theory = \"cosserat\" (\"linear\", or "
             "\"stretching\" for a bridge)");
+  RequireNewtonIntegrator(r, scene, "model.theory = \"cosserat\"");
   if (scene.analysis.type != AnalysisType::kTransient) return;
-  r.Require(scene.analysis.integrator != Integrator::kModal &&
-                scene.analysis.integrator != Integrator::kCentralDifference,
-            "analysis.integrator",
-            "model.theory = \"cosserat\" is solved by Newton: it needs an implicit Newmark-"
-            "family integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
   const std::optional<DampingEffect>& damping = scene.effects.damping;
-  r.Require(!damping || !damping->enabled, "effects.damping",
+  r.Require(!IsOn(damping), "effects.damping",
             "not available for model.theory = \"cosserat\" (remove the table or set enabled = "
             "false)");
 }
@@ -383,17 +387,14 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
 // carries them (not the Cosserat rod, nor modal or explicit stepping).
 void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   const SceneEffects& e = scene.effects;
-  const bool contact = (e.contact && e.contact->enabled) || (e.stiction && e.stiction->enabled);
-  const bool pressure = (e.electrostatic && e.electrostatic->enabled) ||
-                        (e.casimir && e.casimir->enabled) ||
-                        (e.van_der_waals && e.van_der_waals->enabled);
+  const bool contact = e.HasContact();
   const AnalysisType type = scene.analysis.type;
   if (type == AnalysisType::kPullin) {
     r.Require(scene.structure.gap.has_value(), "structure.gap",
               "analysis.type = \"pullin\" needs the substrate: give its gap");
-    r.Require(e.electrostatic && e.electrostatic->enabled, "effects.electrostatic",
+    r.Require(IsOn(e.electrostatic), "effects.electrostatic",
               "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic]");
-    r.Require(!contact, e.stiction && e.stiction->enabled ? "effects.stiction" : "effects.contact",
+    r.Require(!contact, IsOn(e.stiction) ? "effects.stiction" : "effects.contact",
               "not used by analysis.type = \"pullin\", which stops at the fold before contact "
               "(remove the table or set enabled = false)");
   }
@@ -402,12 +403,13 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
               "analysis.type = \"release\" lets the beam go from the substrate: declare "
               "[effects.stiction] (or [effects.contact])");
   }
-  if (!contact && !pressure) return;
-  const char* first =
-      contact ? (e.contact && e.contact->enabled ? "effects.contact" : "effects.stiction")
-              : (e.electrostatic && e.electrostatic->enabled ? "effects.electrostatic"
-                 : e.casimir && e.casimir->enabled           ? "effects.casimir"
-                                                             : "effects.van_der_waals");
+  if (!contact && !e.HasSurfacePressure()) return;
+  // The declared effect the messages below name.
+  const char* first = IsOn(e.contact)         ? "effects.contact"
+                      : IsOn(e.stiction)      ? "effects.stiction"
+                      : IsOn(e.electrostatic) ? "effects.electrostatic"
+                      : IsOn(e.casimir)       ? "effects.casimir"
+                                              : "effects.van_der_waals";
   r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling, first,
             std::string("not available for analysis.type = \"") + ToString(type) +
                 "\", which linearises about the straight beam (remove the table or set enabled = "
@@ -419,28 +421,22 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
                 " is available for the \"linear\" and \"stretching\" theories, "
                 "not \"cosserat\"");
   const std::optional<StictionEffect>& stiction = e.stiction;
-  r.Require(!stiction || !stiction->enabled || stiction->adhesion_energy.value_or(0.0) > 0.0,
+  r.Require(!IsOn(stiction) || stiction->adhesion_energy.value_or(0.0) > 0.0,
             "effects.stiction.adhesion_energy",
             "needs the work of adhesion (J/m^2, > 0), e.g. adhesion_energy = 0.02");
   const std::optional<VanDerWaalsEffect>& vdw = e.van_der_waals;
-  r.Require(!vdw || !vdw->enabled || vdw->hamaker.has_value(), "effects.van_der_waals",
+  r.Require(!IsOn(vdw) || vdw->hamaker.has_value(), "effects.van_der_waals",
             "needs its hamaker constant (J), e.g. hamaker = 1e-19");
   const std::optional<ElectrostaticEffect>& electrostatic = e.electrostatic;
-  r.Require(type == AnalysisType::kPullin || !electrostatic || !electrostatic->enabled ||
-                electrostatic->voltage.has_value(),
-            "effects.electrostatic.voltage",
-            std::string("needs the voltage (V) for analysis.type = \"") + ToString(type) + "\"");
+  r.Require(
+      type == AnalysisType::kPullin || !IsOn(electrostatic) || electrostatic->voltage.has_value(),
+      "effects.electrostatic.voltage",
+      std::string("needs the voltage (V) for analysis.type = \"") + ToString(type) + "\"");
   if (e.contact && e.contact->separation && scene.structure.gap) {
     r.Require(*e.contact->separation < 0.5 * *scene.structure.gap, "effects.contact.separation",
               "must be less than half the gap");
   }
-  if (type != AnalysisType::kTransient) return;
-  r.Require(scene.analysis.integrator != Integrator::kModal &&
-                scene.analysis.integrator != Integrator::kCentralDifference,
-            "analysis.integrator",
-            std::string(first) +
-                " is solved by Newton: it needs an implicit Newmark-family "
-                "integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
+  RequireNewtonIntegrator(r, scene, first);
 }
 
 // What the schema describes but this version cannot simulate is refused, never ignored. Each

@@ -22,9 +22,9 @@ class ForceTuple final : public NonlinearForce {
     return std::apply([&](auto&... f) { return (f.Evaluate(d, force, tangent) && ...); }, forces_);
   }
   bool Settle(const Eigen::VectorXd& d) override {
-    // Every member settles, even after one has changed its state.
-    return std::apply([&](auto&... f) { return (static_cast<int>(f.Settle(d)) & ... & 1) != 0; },
-                      forces_);
+    bool settled = true;  // every member settles, even after one has changed its state
+    std::apply([&](auto&... f) { ((settled = f.Settle(d) && settled), ...); }, forces_);
+    return settled;
   }
   void Commit(const Eigen::VectorXd& d) override {
     std::apply([&](auto&... f) { (f.Commit(d), ...); }, forces_);

@@ -43,10 +43,6 @@ GeneralizedAlphaParameters MakeIntegratorParameters(const SceneAnalysis& analysi
 /// recorded at the free end of a cantilever (x = length) or the middle of a bridge (length / 2).
 TransientOptions MakeTransientOptions(const Scene& scene);
 
-/// Whether the scene declares contact with the substrate: [effects.contact], or
-/// [effects.stiction], which implies it (each unless enabled = false).
-bool HasContact(const Scene& scene);
-
 /// The contact of a validated scene with contact: its gap, stiction with the work of adhesion,
 /// and the contact table's separation (0 by default, or a hundredth of the gap when a surface
 /// pressure is declared: the pressures grow without bound as the faces close), tolerance and

@@ -51,6 +51,12 @@ struct DampingEffect {
   std::optional<std::array<double, 2>> rayleigh;  ///< [alpha 1/s, beta s], each >= 0
 };
 
+/// Whether an effect is simulated: its table present and not disabled.
+template <typename Effect>
+bool IsOn(const std::optional<Effect>& effect) {
+  return effect && effect->enabled;
+}
+
 /// Every effect a scene declares; an absent table is an effect not simulated.
 struct SceneEffects {
   std::optional<ContactEffect> contact;
@@ -59,6 +65,13 @@ struct SceneEffects {
   std::optional<CasimirEffect> casimir;
   std::optional<VanDerWaalsEffect> van_der_waals;
   std::optional<DampingEffect> damping;
+
+  /// Contact with the substrate: [effects.contact], or [effects.stiction], which implies it.
+  bool HasContact() const { return IsOn(contact) || IsOn(stiction); }
+  /// A pressure across the gap: electrostatic, Casimir or van der Waals.
+  bool HasSurfacePressure() const {
+    return IsOn(electrostatic) || IsOn(casimir) || IsOn(van_der_waals);
+  }
 };
 
 }  // namespace cosmems

@@ -26,23 +26,23 @@ class SceneForces {
       stretching_ = std::make_unique<StretchingForce<Dim>>(model);
       structural_.Add(*stretching_);
     }
-    if (HasContact(scene)) {
+    if (e.HasContact()) {
       contact_ = std::make_unique<SubstrateContact<Dim>>(model, MakeContactOptions(scene));
       structural_.Add(*contact_);
     }
     const double length = scene.structure.length;
     const double gap = scene.structure.gap.value_or(0.0);
     // A pull-in analysis scales the electrode's pressure itself: it is the analysis's unknown.
-    if (e.electrostatic && e.electrostatic->enabled && e.electrostatic->voltage &&
+    if (IsOn(e.electrostatic) && e.electrostatic->voltage &&
         scene.analysis.type != AnalysisType::kPullin) {
       const ElectrostaticEffect& s = *e.electrostatic;
       AddPressure(model, ElectrostaticPressure{*s.voltage, scene.structure.width, s.fringing},
                   GapSpan{gap, s.electrode_start.value_or(0.0), s.electrode_end.value_or(length)});
     }
-    if (e.casimir && e.casimir->enabled) {
+    if (IsOn(e.casimir)) {
       AddPressure(model, CasimirPressure{}, GapSpan{gap, 0.0, length});
     }
-    if (e.van_der_waals && e.van_der_waals->enabled) {
+    if (IsOn(e.van_der_waals)) {
       AddPressure(model, VanDerWaalsPressure{*e.van_der_waals->hamaker}, GapSpan{gap, 0.0, length});
     }
     for (NonlinearForce* f :

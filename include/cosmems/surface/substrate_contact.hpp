@@ -107,6 +107,7 @@ class SubstrateContact final : public NonlinearForce {
     schur_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
     multipliers_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m));
     active_.assign(m, 0);
+    held_set_.assign(m, 0);
   }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
@@ -175,20 +176,31 @@ class SubstrateContact final : public NonlinearForce {
       if (stuck_[k] || (Touching(k, gap_ + d[w]) && v[w] < 0.0)) active_[count++] = w;
     }
     if (count == 0 || mass_factor_.info() != Status::kOk) return;
-    for (int j = 0; j < count; ++j) {  // columns of M^-1 C^T, and C M^-1 C^T
-      auto column = columns_.col(j);
-      column.setZero();
-      column[active_[j]] = 1.0;
-      mass_factor_.SolveInPlace(column);
-      for (int i = 0; i < count; ++i) schur_(i, j) = column[active_[i]];
+    // M^-1 C^T and the factor of C M^-1 C^T depend on the held nodes alone: a stuck zone held
+    // step after step reuses them.
+    if (count != held_ ||
+        !std::equal(active_.begin(), active_.begin() + count, held_set_.begin())) {
+      held_ = 0;
+      for (int j = 0; j < count; ++j) {
+        auto column = columns_.col(j);
+        column.setZero();
+        column[active_[j]] = 1.0;
+        mass_factor_.SolveInPlace(column);
+        for (int i = 0; i < count; ++i) schur_(i, j) = column[active_[i]];
+      }
+      Eigen::Ref<Eigen::MatrixXd> schur = schur_.topLeftCorner(count, count);
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(schur);  // in place: allocates nothing
+      if (llt.info() != Eigen::Success) return;
+      std::copy(active_.begin(), active_.begin() + count, held_set_.begin());
+      held_ = count;
     }
-    Eigen::Ref<Eigen::MatrixXd> schur = schur_.topLeftCorner(count, count);
-    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(schur);  // in place: allocates nothing
-    if (llt.info() != Eigen::Success) return;
+    const auto lower = schur_.topLeftCorner(count, count).triangularView<Eigen::Lower>();
     for (Eigen::VectorXd* x : {&v, &a}) {
-      for (int j = 0; j < count; ++j) multipliers_[j] = (*x)[active_[j]];
-      llt.solveInPlace(multipliers_.head(count));
-      x->noalias() -= columns_.leftCols(count) * multipliers_.head(count);
+      auto m = multipliers_.head(count);
+      for (int j = 0; j < count; ++j) m[j] = (*x)[active_[j]];
+      lower.solveInPlace(m);
+      lower.adjoint().solveInPlace(m);
+      x->noalias() -= columns_.leftCols(count) * m;
     }
   }
 
@@ -249,7 +261,7 @@ class SubstrateContact final : public NonlinearForce {
   int NodeCount() const { return static_cast<int>(nodes_.size()); }
   ContactState NodeState(int k) const { return node_state_.at(k); }
   double NodeX(int k) const { return nodes_.at(k).x * units_.length; }  ///< m
-  /// The tolerance and the penalty in use (internal units), for tests and reports.
+  /// The penetration accepted [m], for tests and reports.
   double tolerance() const { return tolerance_ * units_.length; }
 
  private:
@@ -345,7 +357,9 @@ class SubstrateContact final : public NonlinearForce {
   BandCholesky mass_factor_;
   Eigen::MatrixXd columns_, schur_;
   Eigen::VectorXd multipliers_;
-  std::vector<int> active_;  ///< reduced indices of the nodes the projection holds
+  std::vector<int> active_;    ///< reduced indices of the nodes the projection holds
+  std::vector<int> held_set_;  ///< the held nodes columns_ and schur_ were made for
+  int held_ = 0;               ///< their count (0: none made)
 };
 
 }  // namespace cosmems
