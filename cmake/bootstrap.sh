@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # One-step set-up and entry points on a fresh Debian 12 machine:
-#   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever)
+#   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever-haptic)
 #   bash cmake/bootstrap.sh test            build, then run the whole test suite with CTest
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
 # otherwise prints the exact apt-get line and stops. COSMEMS_BUILD_DIR overrides build/release.
@@ -31,7 +31,7 @@ cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build_dir" -j"$jobs"
 
 case "${1:-}" in
-  run) shift; exec "$build_dir/src/cli/cosmems" run cantilever "$@" ;;
+  run) shift; exec "$build_dir/src/cli/cosmems" run cantilever-haptic "$@" ;;
   test) exec ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" ;;
   *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test" >&2; exit 2 ;;
 esac

@@ -11,6 +11,7 @@
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "haptic_report.hpp"
 #include "modal_report.hpp"
 #include "pullin_report.hpp"
 #include "release_report.hpp"
@@ -55,9 +56,8 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kRelease:
       return internal::ReleaseReport::Run(scene);
     case AnalysisType::kHaptic:
-      break;
+      return internal::HapticReport::Run(scene);
   }
-  // The scene layer refuses these analyses in this version; reaching here is a bug.
   throw std::logic_error(std::string("analysis.type = \"") + ToString(scene.analysis.type) +
                          "\" passed validation but has no runner");
 }

@@ -289,19 +289,30 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
     r.Require(a.count >= 1, "analysis.count", "must be at least 1");
   }
   if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
+  if (a.type == AnalysisType::kHaptic) {
+    a.duration = r.OptionalPositive("analysis.duration").value_or(0.0);
+    a.rate = r.Number("analysis.rate", a.rate);
+    r.Require(a.rate == 500.0 || a.rate == 1000.0 || a.rate == 2000.0, "analysis.rate",
+              "must be 500, 1000 or 2000 (Hz: the rates haptic devices run at)");
+  }
   if (a.type == AnalysisType::kPullin) a.voltage_max = r.OptionalPositive("analysis.voltage_max");
   return a;
 }
 
 std::optional<SceneDevice> ReadDevice(const TomlFieldReader& r) {
   if (!r.HasTable("device")) return std::nullopt;
-  r.RejectUnknownKeys("device", {"backend", "trajectory", "realtime"});
+  r.RejectUnknownKeys("device", {"backend", "trajectory", "realtime", "position_scale",
+                                 "force_scale", "coupling_stiffness", "probe_radius"});
   SceneDevice d;
   d.backend =
       r.OptionalChoice("device.backend", kDeviceBackends, "device backend").value_or(d.backend);
   d.trajectory = r.OptionalString("device.trajectory").value_or(d.trajectory);
   r.Require(!d.trajectory.empty(), "device.trajectory", "must not be empty");
   d.realtime = r.Boolean("device.realtime", d.realtime);
+  d.position_scale = r.OptionalPositive("device.position_scale");
+  d.force_scale = r.OptionalPositive("device.force_scale");
+  d.coupling_stiffness = r.OptionalPositive("device.coupling_stiffness");
+  d.probe_radius = r.OptionalPositive("device.probe_radius");
   return d;
 }
 
@@ -439,16 +450,14 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   RequireNewtonIntegrator(r, scene, first);
 }
 
-// What the schema describes but this version cannot simulate is refused, never ignored. Each
-// later feature removes its line here.
-void RefuseUnavailable(const TomlFieldReader& r, const Scene& scene) {
-  const std::string unavailable = "not available in this version";
-  r.Require(scene.analysis.type != AnalysisType::kHaptic, "analysis.type",
-            unavailable +
-                " (available: \"static\", \"modal\", \"buckling\", \"transient\", "
-                "\"pullin\", \"release\")");
-  r.Require(!scene.device, "device",
-            unavailable + " (it drives the haptic analysis, not built yet)");
+// The haptic analysis touches the beam through the frame-element model: not the Cosserat rod.
+void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.analysis.type != AnalysisType::kHaptic) return;
+  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
+            "\"cosserat\" is not available for the haptic analysis (use \"linear\" or "
+            "\"stretching\")");
+  r.Require(scene.model.modes == 0, "model.modes",
+            "must be 0 for the haptic analysis (the full model is touched)");
 }
 
 }  // namespace
@@ -470,7 +479,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   CheckStretching(r, scene);
   CheckCosserat(r, scene);
   CheckSurface(r, scene);
-  RefuseUnavailable(r, scene);
+  CheckHaptic(r, scene);
   return scene;
 }
 

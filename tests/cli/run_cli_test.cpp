@@ -376,8 +376,8 @@ TEST(RunCliTest, SceneErrorsAreOneLineWithExitTwo) {
             "axially: structure.kind = \"bridge\"\n");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "structure.lenght=1e-4"}),
                  "structure.lenght = 1e-04: unknown key");
-  ExpectContains(InvalidInput({"run", "cantilever", "--set", "analysis.type=haptic"}),
-                 "analysis.type = \"haptic\": not available in this version");
+  ExpectContains(InvalidInput({"run", "cantilever-haptic", "--set", "analysis.rate=750"}),
+                 "analysis.rate = 750: must be 500, 1000 or 2000");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "model.elements"}),
                  "expected KEY=VALUE");
   ExpectContains(InvalidInput({"run", "no-such-scene"}),

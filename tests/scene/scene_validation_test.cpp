@@ -127,8 +127,6 @@ SceneText With(const std::string& key, const std::string& value) {
 
 SceneText Without(const std::string& key) { return SceneText().Remove(key); }
 
-const std::string kUnavailable = "not available in this version";
-
 INSTANTIATE_TEST_SUITE_P(
     MissingKeys, SceneValidationTest,
     ::testing::Values(
@@ -282,14 +280,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"device_typo", With("device.speed", "1.0"), "device.speed = 1.0", "unknown key"},
         BadScene{"quoted_key", With("structure.\"a b\"", "1"), "structure.\"a b\" = 1",
                  "unknown key"}),
-    CaseName);
-
-INSTANTIATE_TEST_SUITE_P(
-    NotYetAvailable, SceneValidationTest,
-    ::testing::Values(BadScene{"haptic", With("analysis.type", "\"haptic\""),
-                               "analysis.type = \"haptic\"", kUnavailable},
-                      BadScene{"device", With("device.backend", "\"scripted\""),
-                               "device = { backend = \"scripted\" }", kUnavailable}),
     CaseName);
 
 // Contact, stiction and the surface pressures: what each needs, and where they act.

@@ -207,6 +207,9 @@ struct SceneAnalysis {
 
   // pullin
   std::optional<double> voltage_max;  ///< V: search no further than this voltage
+
+  // haptic (duration above: empty or 0 runs the whole trajectory)
+  double rate = 1000.0;  ///< Hz, the servo rate (and the physics tick)
 };
 
 /// [device]: the haptic device of a haptic analysis.
@@ -214,6 +217,12 @@ struct SceneDevice {
   DeviceBackend backend = DeviceBackend::kScripted;
   std::string trajectory = "press";  ///< a built-in motion or a CSV file (time_s, x_m, y_m, z_m)
   bool realtime = false;             ///< true: paced at the rate on the wall clock
+  // Hand <-> micro world (HandScaling); empty: derived from the structure and the device.
+  std::optional<double> position_scale;      ///< hand m per micro m (default 5000)
+  std::optional<double> force_scale;         ///< hand N per micro N (default: the coupling is
+                                             ///< felt at half the device's renderable stiffness)
+  std::optional<double> coupling_stiffness;  ///< N/m, stylus-probe spring (default 25 k_struct)
+  std::optional<double> probe_radius;        ///< m, the stylus tip (default: the thickness)
 };
 
 /// A scene file in typed form: SI units, the documented defaults for every optional key

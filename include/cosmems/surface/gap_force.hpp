@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/core/gauss_legendre.hpp"
 #include "cosmems/core/nonlinear_force.hpp"
 #include "cosmems/core/validation.hpp"
@@ -118,14 +119,8 @@ class GapForce final : public NonlinearForce {
     return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
   }
 
-  // The Hermite cubics of w1, h theta1, w2, h theta2 at xi.
-  static std::array<double, 4> Shapes(double xi) {
-    const double x2 = xi * xi, x3 = x2 * xi;
-    return {1.0 - 3.0 * x2 + 2.0 * x3, xi - 2.0 * x2 + x3, 3.0 * x2 - 2.0 * x3, x3 - x2};
-  }
-
   double Gap(const std::array<double, 4>& q, double xi) const {
-    const std::array<double, 4> n = Shapes(xi);
+    const std::array<double, 4> n = HermiteShapes(xi);
     return gap_ + n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3];
   }
 
@@ -133,7 +128,7 @@ class GapForce final : public NonlinearForce {
                  Eigen::VectorXd& force, ForceTangent& tangent) const {
     for (std::size_t k = 0; k < rule_.points.size(); ++k) {
       const double xi = a + rule_.points[k] * (b - a);
-      std::array<double, 4> n = Shapes(xi);
+      std::array<double, 4> n = HermiteShapes(xi);
       n[1] *= s.h;
       n[3] *= s.h;
       const double gap = Gap(q, xi) * length_;  // m

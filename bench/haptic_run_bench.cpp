@@ -1,0 +1,52 @@
+// The default haptic scene (cantilever-haptic: the 20-element reference cantilever with contact,
+// stiction and the Casimir force, pressed by the scripted stylus) run for 10 s paced on the wall
+// clock at 1 kHz, the physics on its own thread, as `cosmems run cantilever-haptic` runs it.
+// Counters: the servo loop's achieved rate, its tick compute times and deadline misses, and the
+// physics thread's tick times; the servo ticks' compute-time histogram goes to stderr.
+#include <benchmark/benchmark.h>
+
+#include <iostream>
+
+#include "cosmems/scene/scene_loader.hpp"
+#include "haptic_report.hpp"
+
+namespace cosmems {
+namespace {
+
+void PrintHistogram(const LoopStats& s, const char* title) {
+  std::cerr << title << " compute time histogram (1 us bins, non-empty only):\n";
+  for (int i = 0; i < LoopStats::kBins; ++i) {
+    const std::uint32_t count = s.histogram[static_cast<std::size_t>(i)];
+    if (count == 0) continue;
+    std::cerr << "  " << (i == LoopStats::kBins - 1 ? ">=" : "") << i << " us: " << count << "\n";
+  }
+}
+
+void BM_PacedHapticRun(benchmark::State& state) {
+  const Scene scene = LoadScene(
+      "cantilever-haptic",
+      {SceneOverride::Parse("analysis.duration=10"), SceneOverride::Parse("device.realtime=true")});
+  for (auto _ : state) {
+    const auto report = internal::HapticReport::Run(scene);
+    const internal::HapticResults& r = report->results();
+    state.counters["ticks"] = static_cast<double>(r.servo.ticks);
+    state.counters["rate_hz"] = r.servo.rate_hz;
+    state.counters["realtime"] = r.servo.realtime ? 1 : 0;
+    state.counters["deadline_misses"] = static_cast<double>(r.servo.deadline_misses);
+    state.counters["period_max_us"] = r.servo.period_max_us;
+    state.counters["tick_median_us"] = r.servo.ComputeQuantileUs(0.5);
+    state.counters["tick_p99_us"] = r.servo.ComputeQuantileUs(0.99);
+    state.counters["tick_max_us"] = r.servo.compute_max_us;
+    state.counters["physics_median_us"] = r.physics.ComputeQuantileUs(0.5);
+    state.counters["physics_p99_us"] = r.physics.ComputeQuantileUs(0.99);
+    state.counters["physics_max_us"] = r.physics.compute_max_us;
+    state.counters["physics_misses"] = static_cast<double>(r.physics.deadline_misses);
+    state.counters["failed_physics"] = static_cast<double>(r.failed_physics_ticks);
+    PrintHistogram(r.servo, "servo tick");
+    PrintHistogram(r.physics, "physics tick");
+  }
+}
+BENCHMARK(BM_PacedHapticRun)->Iterations(1)->Unit(benchmark::kSecond);
+
+}  // namespace
+}  // namespace cosmems

@@ -1,0 +1,148 @@
+#pragma once
+
+#include <time.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <thread>
+
+#include "cosmems/haptics/hand_scaling.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/loop_stats.hpp"
+#include "cosmems/haptics/servo_client.hpp"
+#include "cosmems/haptics/triple_buffer.hpp"
+
+namespace cosmems {
+
+/// Where the physics runs relative to the servo loop.
+enum class PhysicsThread {
+  kServo,  ///< inside each servo tick: deterministic, the tick pays for the physics
+  kOwn,    ///< its own thread, paced at the physics tick; the servo loop renders its LocalModel
+};
+
+struct HapticLoopOptions {
+  HandScaling scaling;
+  PhysicsThread physics = PhysicsThread::kServo;
+  /// The stylus button (bit index) whose press is the paper's "Reset Failure"; -1: none.
+  int reset_button = 1;
+};
+
+/// The ServoClient that lets a hand touch a HapticBeam: each servo tick maps the stylus into the
+/// micro world (HandScaling), has the physics place the probe there (in the tick, or on the
+/// physics thread through a TripleBuffer), renders the probe's force from the newest LocalModel
+/// and scales it back to the hand. The display side reads HapticFrames through another
+/// TripleBuffer. Tick() allocates nothing.
+template <int Dim>
+class HapticLoop final : public ServoClient {
+ public:
+  HapticLoop(HapticBeam<Dim>& beam, const HapticLoopOptions& options)
+      : beam_(beam), options_(ValidOptions(options)), frames_(beam.MakeFrame()) {
+    physics_.Start(1e-3, options.physics == PhysicsThread::kOwn, false);
+  }
+  ~HapticLoop() override { StopPhysics(); }
+  HapticLoop(const HapticLoop&) = delete;
+  HapticLoop& operator=(const HapticLoop&) = delete;
+
+  /// Starts the physics thread (PhysicsThread::kOwn; nothing otherwise). Before the device.
+  void StartPhysics(double tick_s) {
+    if (options_.physics != PhysicsThread::kOwn || thread_.joinable()) return;
+    physics_.Start(tick_s, true, false);
+    stop_ = false;
+    thread_ = std::thread([this, tick_s] { RunPhysics(tick_s); });
+  }
+  /// Stops and joins the physics thread (after the device has stopped).
+  void StopPhysics() {
+    if (!thread_.joinable()) return;
+    stop_ = true;
+    thread_.join();
+  }
+
+  void Tick(const DeviceState& state, ForceCommand& command) noexcept override {
+    const Eigen::Vector3d micro = options_.scaling.ToMicro(state.position_m);
+    if (options_.physics == PhysicsThread::kServo) {
+      RunPhysicsTick({micro, state.time_s, state.buttons});
+      model_ = beam_.local_model();
+    } else {
+      probes_.Publish({micro, state.time_s, state.buttons});
+      if (models_.Update()) model_ = models_.Front();
+    }
+    command.valid = model_.valid;
+    command.age_s = state.time_s - model_.source_time_s;
+    command.force_n = options_.scaling.HandForce(Eigen::Vector3d(0.0, model_.ForceAt(micro), 0.0));
+  }
+
+  /// Display side (one thread): takes the newest frame, true when it changed.
+  bool UpdateFrame() { return frames_.Update(); }
+  const HapticFrame& frame() const { return frames_.Front(); }
+
+  /// Physics tick times (the servo loop's own figures come from the device); complete once the
+  /// device and the physics thread have stopped.
+  const LoopStats& physics_stats() const { return physics_.stats(); }
+  /// Ticks whose physics failed (the local model was invalid until the next good one).
+  std::uint64_t failed_ticks() const { return failed_; }
+
+ private:
+  struct ProbeInput {
+    Eigen::Vector3d probe_m = Eigen::Vector3d(0.0, 1.0, 0.0);
+    double time_s = 0.0;
+    std::uint32_t buttons = 0;
+  };
+
+  static HapticLoopOptions ValidOptions(const HapticLoopOptions& options) {
+    options.scaling.Validate();
+    return options;
+  }
+
+  static double Now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+  }
+
+  void RunPhysicsTick(const ProbeInput& input) {
+    const double start = Now();
+    const bool reset = options_.reset_button >= 0 &&
+                       ((input.buttons >> options_.reset_button) & 1u) != 0 &&
+                       ((last_buttons_ >> options_.reset_button) & 1u) == 0;
+    last_buttons_ = input.buttons;
+    if (reset) beam_.Reset();
+    if (beam_.Advance(input.probe_m, input.time_s) != Status::kOk) ++failed_;
+    beam_.Fill(frames_.Back());
+    frames_.Publish();
+    physics_.Record(start, (Now() - start) * 1e6);
+  }
+
+  // The physics thread: one tick per period on absolute deadlines (no drift, no busy wait), on
+  // the newest probe position the servo loop published.
+  void RunPhysics(double tick_s) {
+    timespec next{};
+    clock_gettime(CLOCK_MONOTONIC, &next);
+    const long period_ns = static_cast<long>(tick_s * 1e9);
+    ProbeInput input;
+    while (!stop_.load(std::memory_order_relaxed)) {
+      if (probes_.Update()) input = probes_.Front();
+      RunPhysicsTick(input);
+      models_.Publish(beam_.local_model());
+      next.tv_nsec += period_ns;
+      while (next.tv_nsec >= 1000000000L) {
+        next.tv_nsec -= 1000000000L;
+        ++next.tv_sec;
+      }
+      clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr);
+    }
+  }
+
+  HapticBeam<Dim>& beam_;
+  HapticLoopOptions options_;
+  LocalModel model_;  // the servo thread's copy
+  std::uint32_t last_buttons_ = 0;
+  std::uint64_t failed_ = 0;
+  LoopStatsRecorder physics_;
+  TripleBuffer<ProbeInput> probes_;   // servo -> physics
+  TripleBuffer<LocalModel> models_;   // physics -> servo
+  TripleBuffer<HapticFrame> frames_;  // physics -> display
+  std::thread thread_;
+  std::atomic<bool> stop_{false};
+};
+
+}  // namespace cosmems

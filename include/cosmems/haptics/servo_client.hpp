@@ -1,0 +1,16 @@
+#pragma once
+
+#include "cosmems/haptics/device_types.hpp"
+
+namespace cosmems {
+
+/// What runs inside the servo loop: once per tick, on the backend's servo thread, it reads the
+/// device state and says what force to push with. It must not allocate, lock, block or throw;
+/// the safety layer checks and limits whatever it returns before the device sees it.
+class ServoClient {
+ public:
+  virtual ~ServoClient() = default;
+  virtual void Tick(const DeviceState& state, ForceCommand& command) noexcept = 0;
+};
+
+}  // namespace cosmems

@@ -1,0 +1,162 @@
+#include "haptic_report.hpp"
+
+#include <chrono>
+
+#include "cli_input_error.hpp"
+#include "contact_report.hpp"
+#include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/scene/scene_conversion.hpp"
+#include "cosmems/scene/scene_forces.hpp"
+#include "cosmems/scripted/scripted_device.hpp"
+#include "csv_file.hpp"
+#include "haptic_settings.hpp"
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+nlohmann::ordered_json TimesJson(const LoopStats& s) {
+  return {{"median", s.ComputeQuantileUs(0.5)},
+          {"p99", s.ComputeQuantileUs(0.99)},
+          {"max", s.ComputeQuantileUs(1.0)}};
+}
+
+template <int Dim>
+std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
+  const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
+  if (device_scene.backend != DeviceBackend::kScripted) {
+    throw CliInputError(
+        "device.backend = \"openhaptics\": the command line drives the scripted stylus; an "
+        "Omni is driven by examples/omni_cantilever");
+  }
+  RunHeader header = RunHeader::Start(scene);
+  const auto start = std::chrono::steady_clock::now();
+  HapticSettings settings = MakeHapticSettings(scene);
+  const BeamModel<Dim> model(MakeBeamDescription(scene));
+  SceneForces<Dim> forces(model, scene);
+  HapticPhysicsOptions physics;
+  physics.tick_s = 1.0 / scene.analysis.rate;
+  HapticBeam<Dim> beam(model, settings.probe, forces.All(), forces.contact(), {}, physics);
+  HapticLoopOptions loop_options;
+  loop_options.scaling = settings.scaling;
+  loop_options.physics = device_scene.realtime ? PhysicsThread::kOwn : PhysicsThread::kServo;
+  HapticLoop<Dim> loop(beam, loop_options);
+  ScriptedOptions options;
+  options.clock = device_scene.realtime ? ScriptedClock::kPaced : ScriptedClock::kFast;
+  options.specs = settings.specs;
+  ScriptedDevice device(std::move(settings.trajectory), options);
+
+  HapticResults r;
+  header.status = Status::kOk;
+  if (device.Open() != DeviceStatus::kOk) throw std::runtime_error("scripted device: open failed");
+  loop.StartPhysics(physics.tick_s);
+  if (device.Start(loop) != DeviceStatus::kOk) {
+    loop.StopPhysics();
+    throw std::runtime_error("scripted device: start failed");
+  }
+  device.WaitUntilDone();
+  device.Stop();
+  loop.StopPhysics();
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.dofs = model.FreeDofCount();
+  r.servo = device.stats();
+  r.physics = loop.physics_stats();
+  r.failed_physics_ticks = loop.failed_ticks();
+  r.safety = device.safety_counters();
+  r.force_limit_n = device.force_limit_n();
+  loop.UpdateFrame();
+  r.contact = loop.frame().contact;
+  r.events = loop.frame().events;
+  r.position_scale = settings.scaling.position_scale;
+  r.force_scale = settings.scaling.force_scale;
+  r.coupling_n_per_m = settings.probe.stiffness;
+  r.felt_coupling_n_per_m = settings.felt_coupling_n_per_m;
+  r.felt_structure_n_per_m = settings.felt_structure_n_per_m;
+  r.realtime_note = device.realtime_note();
+  r.forces = device.Recorded();
+  if (r.failed_physics_ticks > 0) {
+    header.warnings.push_back(std::to_string(r.failed_physics_ticks) +
+                              " physics ticks failed; the safety layer held the force at zero "
+                              "until the next good one");
+  }
+  if (device_scene.realtime && !r.servo.realtime && !r.realtime_note.empty()) {
+    header.warnings.push_back("not real-time: " + r.realtime_note);
+  }
+  return std::make_unique<HapticReport>(std::move(header), std::move(r));
+}
+
+}  // namespace
+
+std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
+  return scene.model.dimension == 2 ? RunHaptic<2>(scene) : RunHaptic<3>(scene);
+}
+
+void HapticReport::AddResults(nlohmann::ordered_json& json) const {
+  const HapticResults& r = results_;
+  json["ticks"] = r.servo.ticks;
+  json["tick_time_us"] = TimesJson(r.servo);
+  json["deadline_misses"] = r.servo.deadline_misses;
+  json["max_device_force_n"] = r.safety.max_force_n;
+  json["force_limit_n"] = r.force_limit_n;
+  json["stuck_events"] = r.events.stuck;
+  json["proximity_warnings"] = r.events.proximity_warnings;
+  json["rate_hz"] = r.servo.rate_hz;
+  json["paced"] = r.servo.paced;
+  json["realtime"] = r.servo.realtime;
+  json["overruns"] = r.servo.overruns;
+  json["physics"] = {{"ticks", r.physics.ticks},
+                     {"failed_ticks", r.failed_physics_ticks},
+                     {"tick_time_us", TimesJson(r.physics)}};
+  json["safety"] = {{"clamped", r.safety.clamped},
+                    {"slew_limited", r.safety.slew_limited},
+                    {"ramp_ticks", r.safety.ramp_ticks},
+                    {"stale_forces", r.safety.stale_forces},
+                    {"non_finite_states", r.safety.non_finite_states},
+                    {"non_finite_forces", r.safety.non_finite_forces},
+                    {"device_faults", r.safety.device_faults},
+                    {"passivity_activations", r.safety.passivity_activations}};
+  json["scaling"] = {{"position_scale", r.position_scale},
+                     {"force_scale", r.force_scale},
+                     {"coupling_stiffness_n_per_m", r.coupling_n_per_m},
+                     {"felt_coupling_n_per_m", r.felt_coupling_n_per_m},
+                     {"felt_structure_n_per_m", r.felt_structure_n_per_m}};
+  json["contact"] = ContactJson(r.contact);
+  json["contact_events"] = ContactEventsJson(r.events);
+}
+
+void HapticReport::PrintResults(std::ostream& out) const {
+  const HapticResults& r = results_;
+  const LoopStats& s = r.servo;
+  out << "servo ticks           " << s.ticks << " at " << Significant(s.rate_hz, 6) << " Hz ("
+      << (s.paced ? "paced" : "as fast as possible") << (s.realtime ? ", real-time" : "") << ")\n";
+  out << "tick time             median " << Significant(s.ComputeQuantileUs(0.5), 3) << " us, p99 "
+      << Significant(s.ComputeQuantileUs(0.99), 3) << " us, max "
+      << Significant(s.compute_max_us, 3) << " us\n";
+  out << "deadline misses       " << s.deadline_misses << ", overruns " << s.overruns << "\n";
+  out << "physics tick          median " << Significant(r.physics.ComputeQuantileUs(0.5), 3)
+      << " us, p99 " << Significant(r.physics.ComputeQuantileUs(0.99), 3) << " us, max "
+      << Significant(r.physics.compute_max_us, 3) << " us\n";
+  out << "device force          max " << Significant(r.safety.max_force_n, 3) << " N (limit "
+      << Significant(r.force_limit_n, 3) << " N, clamped " << r.safety.clamped << " ticks)\n";
+  out << "felt stiffness        coupling " << Significant(r.felt_coupling_n_per_m, 3)
+      << " N/m, structure " << Significant(r.felt_structure_n_per_m, 3) << " N/m\n";
+  out << "events                " << r.events.proximity_warnings << " proximity warnings, "
+      << r.events.contacts << " contacts, " << r.events.stuck << " stuck, " << r.events.releases
+      << " releases\n";
+  PrintContact(out, r.contact);
+}
+
+void HapticReport::WriteFiles(const std::filesystem::path& directory) const {
+  CsvFile csv(directory / "device_forces.csv", "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n");
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(results_.forces.size()), 7);
+  for (std::size_t i = 0; i < results_.forces.size(); ++i) {
+    const ScriptedSample& s = results_.forces[i];
+    rows.row(static_cast<Eigen::Index>(i)) << s.time_s, s.position_m.transpose(),
+        s.force_n.transpose();
+  }
+  csv.Rows(rows);
+  csv.Close();
+}
+
+}  // namespace cosmems::internal

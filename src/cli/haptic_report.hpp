@@ -1,0 +1,55 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "analysis_report.hpp"
+#include "cosmems/haptics/loop_stats.hpp"
+#include "cosmems/haptics/safety_layer.hpp"
+#include "cosmems/scene/scene.hpp"
+#include "cosmems/scripted/scripted_sample.hpp"
+#include "cosmems/surface/contact_state.hpp"
+
+namespace cosmems::internal {
+
+/// What a haptic analysis reports, in SI (SCENES.md, haptic).
+struct HapticResults {
+  LoopStats servo;    ///< the servo loop's figures
+  LoopStats physics;  ///< the physics ticks' (its own thread when realtime, else in the servo)
+  std::uint64_t failed_physics_ticks = 0;
+  SafetyCounters safety;
+  double force_limit_n = 0.0;
+  ContactSummary contact;  ///< at the end
+  ContactEvents events;    ///< over the run
+  double position_scale = 0.0, force_scale = 0.0;
+  double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
+  std::string realtime_note;
+  std::vector<ScriptedSample> forces;  ///< every tick: stylus and the force sent to it
+};
+
+/// The scripted stylus touching the beam: a ScriptedDevice replays [device].trajectory at the
+/// analysis rate; a HapticLoop runs the beam (HapticBeam: the scene's effects plus the probe)
+/// and renders the force through the safety layer. realtime = true paces the ticks on the wall
+/// clock with the physics on its own thread; false runs them as fast as possible with the
+/// physics inside each tick, deterministically. device_forces.csv in --out.
+class HapticReport final : public AnalysisReport {
+ public:
+  HapticReport(RunHeader header, HapticResults results)
+      : AnalysisReport(std::move(header)), results_(std::move(results)) {}
+
+  static std::unique_ptr<HapticReport> Run(const Scene& scene);
+
+  const HapticResults& results() const { return results_; }
+
+  /// device_forces.csv: time_s, x_m, y_m, z_m, fx_n, fy_n, fz_n at every tick (device frame).
+  void WriteFiles(const std::filesystem::path& directory) const override;
+
+ protected:
+  void AddResults(nlohmann::ordered_json& json) const override;
+  void PrintResults(std::ostream& out) const override;
+
+ private:
+  HapticResults results_;
+};
+
+}  // namespace cosmems::internal

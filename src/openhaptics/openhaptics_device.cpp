@@ -1,0 +1,304 @@
+#include "cosmems/openhaptics/openhaptics_device.hpp"
+
+#include <HD/hd.h>
+
+#include <atomic>
+#include <cstdint>
+#include <initializer_list>
+#include <limits>
+#include <stdexcept>
+
+namespace cosmems {
+namespace {
+
+constexpr int kInitRetries = 10;  // SOFA's driver gives a stale initialisation ten tries
+constexpr int kMaxErrors = 64;    // more than the stack holds: draining always ends
+
+// hduIsForceError's rule, plus the impulse limit: the device refused this tick's force, the loop
+// may go on. Reimplemented so that the library needs only libHD.
+bool IsForceError(HDerror code) {
+  return code == HD_WARM_MOTORS || code == HD_EXCEEDED_MAX_FORCE ||
+         code == HD_EXCEEDED_MAX_FORCE_IMPULSE || code == HD_EXCEEDED_MAX_VELOCITY ||
+         code == HD_FORCE_ERROR;
+}
+
+// hduIsSchedulerError's rule: the servo loop cannot go on.
+bool IsSchedulerError(HDerror code) {
+  return code == HD_COMM_ERROR || code == HD_COMM_CONFIG_ERROR || code == HD_TIMER_ERROR ||
+         code == HD_INVALID_PRIORITY || code == HD_SCHEDULER_FULL;
+}
+
+// Empties the error stack; returns its oldest entry (the cause of the rest), or HD_SUCCESS.
+HDErrorInfo DrainErrors() {
+  HDErrorInfo oldest{HD_SUCCESS, 0, HD_INVALID_HANDLE};
+  for (int i = 0; i < kMaxErrors; ++i) {
+    const HDErrorInfo error = hdGetError();
+    if (!HD_DEVICE_ERROR(error)) break;
+    oldest = error;
+  }
+  return oldest;
+}
+
+// A value the device may not report (older devices lack some): 0 then, which leaves the field
+// to the built-in table.
+double ReadDouble(HDenum parameter) {
+  HDdouble value = 0.0;
+  hdGetDoublev(parameter, &value);
+  return HD_DEVICE_ERROR(DrainErrors()) ? 0.0 : value;
+}
+
+std::string ReadString(HDenum parameter) {
+  const HDstring value = hdGetString(parameter);
+  return HD_DEVICE_ERROR(DrainErrors()) || value == nullptr ? std::string() : std::string(value);
+}
+
+HDenum PreferredStyle(HDint styles) {
+  for (const HDint style :
+       {HD_CALIBRATION_AUTO, HD_CALIBRATION_INKWELL, HD_CALIBRATION_ENCODER_RESET}) {
+    if ((styles & style) != 0) return static_cast<HDenum>(style);
+  }
+  return 0;
+}
+
+// Checks the calibration and updates it when the device can do that alone. Call it in a frame.
+HDenum Calibrate(HDint styles) {
+  HDenum status = hdCheckCalibration();
+  const HDenum style = PreferredStyle(styles);
+  if (status == HD_CALIBRATION_NEEDS_UPDATE && style != 0) {
+    hdUpdateCalibration(style);
+    status = hdCheckCalibration();
+  }
+  return status;
+}
+
+CalibrationStatus ToStatus(HDenum status) {
+  switch (status) {
+    case HD_CALIBRATION_OK:
+      return CalibrationStatus::kOk;
+    case HD_CALIBRATION_NEEDS_UPDATE:
+      return CalibrationStatus::kNeedsUpdate;
+    default:
+      return CalibrationStatus::kNeedsManualInput;
+  }
+}
+
+}  // namespace
+
+struct OpenHapticsDevice::Session {
+  // Set up and read by the controlling thread.
+  HHD device = HD_INVALID_HANDLE;
+  HDSchedulerHandle servo = 0;
+  HDint calibration_styles = 0;
+  double rate_hz = 1000.0;
+  bool running = false;
+
+  // The servo thread's, between StartServo() and StopServo().
+  std::uint64_t tick = 0;
+  bool fault_pending = false;  // a force error at the last tick: tell the next one
+
+  // Shared.
+  std::atomic<HDenum> calibration{HD_CALIBRATION_OK};
+  std::atomic<bool> ended{false};
+  std::atomic<std::uint64_t> error{0};  // errorCode << 32 | internalErrorCode, in one piece
+
+  void Record(const HDErrorInfo& e) {
+    if (!HD_DEVICE_ERROR(e)) return;
+    error.store(static_cast<std::uint64_t>(e.errorCode) << 32 |
+                static_cast<std::uint32_t>(e.internalErrorCode));
+  }
+
+  static HDCallbackCode HDCALLBACK Servo(void* user_data);
+  HDCallbackCode Tick(OpenHapticsDevice& owner) noexcept;
+  HDCallbackCode Triage() noexcept;
+};
+
+HDCallbackCode HDCALLBACK OpenHapticsDevice::Session::Servo(void* user_data) {
+  auto& owner = *static_cast<OpenHapticsDevice*>(user_data);
+  return owner.session_->Tick(owner);
+}
+
+// One tick: the stylus in SI in, the safety layer's force out, inside one frame. Beginning the
+// frame on our own handle also makes it current, whatever other device ran before.
+HDCallbackCode OpenHapticsDevice::Session::Tick(OpenHapticsDevice& owner) noexcept {
+  hdBeginFrame(device);
+  // A read that fails leaves NaN, which the safety layer takes as a device fault.
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  HDdouble position_mm[3] = {kNaN, kNaN, kNaN};
+  HDdouble velocity_mm_s[3] = {kNaN, kNaN, kNaN};
+  Eigen::Matrix4d transform = Eigen::Matrix4d::Identity();  // column-major, as HD's
+  HDint buttons = 0;
+  hdGetDoublev(HD_CURRENT_POSITION, position_mm);
+  hdGetDoublev(HD_CURRENT_VELOCITY, velocity_mm_s);
+  hdGetDoublev(HD_CURRENT_TRANSFORM, transform.data());
+  hdGetIntegerv(HD_CURRENT_BUTTONS, &buttons);
+
+  DeviceState state;
+  state.tick = tick;
+  state.time_s = static_cast<double>(tick) / rate_hz;
+  state.position_m = 1e-3 * Eigen::Map<const Eigen::Vector3d>(position_mm);
+  state.velocity_m_s = 1e-3 * Eigen::Map<const Eigen::Vector3d>(velocity_mm_s);
+  state.orientation = transform.topLeftCorner<3, 3>();
+  state.buttons = static_cast<std::uint32_t>(buttons);
+  state.fault = fault_pending;
+  fault_pending = false;
+  // An inkwell calibration completes only while the scheduler runs: keep checking until it has.
+  if (calibration.load(std::memory_order_relaxed) != HD_CALIBRATION_OK) {
+    calibration.store(Calibrate(calibration_styles), std::memory_order_relaxed);
+  }
+
+  const Eigen::Vector3d force_n = owner.ServoTick(state);
+  hdSetDoublev(HD_CURRENT_FORCE, force_n.data());
+  hdEndFrame(device);
+  ++tick;
+  return Triage();
+}
+
+// The pattern of the SDK's examples: a force error drops the force and the loop goes on; a
+// scheduler error ends it.
+HDCallbackCode OpenHapticsDevice::Session::Triage() noexcept {
+  bool fatal = false;
+  for (int i = 0; i < kMaxErrors; ++i) {
+    const HDErrorInfo e = hdGetError();
+    if (!HD_DEVICE_ERROR(e)) break;
+    Record(e);
+    fatal = fatal || IsSchedulerError(e.errorCode);
+    fault_pending = fault_pending || IsForceError(e.errorCode);
+  }
+  if (!fatal) return HD_CALLBACK_CONTINUE;
+  ended.store(true);
+  return HD_CALLBACK_DONE;
+}
+
+OpenHapticsDevice::OpenHapticsDevice(const OpenHapticsOptions& options)
+    : HapticDevice(options.safety), options_(options), session_(std::make_unique<Session>()) {
+  if (options.scheduler_rate_hz <= 0) {
+    throw std::invalid_argument("scheduler_rate_hz = " + std::to_string(options.scheduler_rate_hz) +
+                                " is not positive");
+  }
+  session_->rate_hz = options.scheduler_rate_hz;
+}
+
+OpenHapticsDevice::~OpenHapticsDevice() {
+  Stop();
+  Close();
+}
+
+OpenHapticsError OpenHapticsDevice::last_error() const {
+  const std::uint64_t packed = session_->error.load();
+  OpenHapticsError e;
+  e.code = static_cast<unsigned int>(packed >> 32);
+  e.internal_code = static_cast<int>(static_cast<std::uint32_t>(packed));
+  if (e.code != HD_SUCCESS) e.description = hdGetErrorString(e.code);
+  return e;
+}
+
+bool OpenHapticsDevice::servo_ended() const { return session_->ended.load(); }
+
+DeviceStatus OpenHapticsDevice::OpenBackend(DeviceSpecs& specs) {
+  Session& s = *session_;
+  DrainErrors();  // earlier calls' errors are not this one's
+  const HDstring name =
+      options_.device_name.empty() ? HD_DEFAULT_DEVICE : options_.device_name.c_str();
+  HHD device = hdInitDevice(name);
+  HDErrorInfo error = DrainErrors();
+  // After a crash the driver may still hold the device: release what this process holds and
+  // try again. A device held by another program stays refused.
+  for (int i = 0; i < kInitRetries && error.errorCode == HD_DEVICE_ALREADY_INITIATED; ++i) {
+    const HHD stale = hdGetCurrentDevice();
+    if (stale != HD_INVALID_HANDLE) hdDisableDevice(stale);
+    DrainErrors();
+    device = hdInitDevice(name);
+    error = DrainErrors();
+  }
+  if (HD_DEVICE_ERROR(error) || device == HD_INVALID_HANDLE) {
+    s.Record(error);
+    return error.errorCode == HD_DEVICE_ALREADY_INITIATED ? DeviceStatus::kAlreadyInUse
+                                                          : DeviceStatus::kNotFound;
+  }
+  s.device = device;
+  hdMakeCurrentDevice(device);
+
+  // The HD API's units are mm and N; DeviceSpecs' are SI. It reports neither the button count
+  // nor the encoder resolution: those stay 0 for the built-in table.
+  specs.model = ReadString(HD_DEVICE_MODEL_TYPE);
+  specs.vendor = ReadString(HD_DEVICE_VENDOR);
+  specs.max_force_n = ReadDouble(HD_NOMINAL_MAX_FORCE);
+  specs.max_continuous_force_n = ReadDouble(HD_NOMINAL_MAX_CONTINUOUS_FORCE);
+  specs.max_stiffness_n_per_m = 1e3 * ReadDouble(HD_NOMINAL_MAX_STIFFNESS);
+  specs.max_damping_ns_per_m = 1e3 * ReadDouble(HD_NOMINAL_MAX_DAMPING);
+  HDdouble box_mm[6] = {};
+  hdGetDoublev(HD_USABLE_WORKSPACE_DIMENSIONS, box_mm);
+  if (!HD_DEVICE_ERROR(DrainErrors())) {
+    specs.workspace_min_m = 1e-3 * Eigen::Map<const Eigen::Vector3d>(box_mm);
+    specs.workspace_max_m = 1e-3 * Eigen::Map<const Eigen::Vector3d>(box_mm + 3);
+  }
+  specs.nominal_rate_hz = s.rate_hz;
+  hdGetIntegerv(HD_CALIBRATION_STYLE, &s.calibration_styles);
+  if (HD_DEVICE_ERROR(DrainErrors())) s.calibration_styles = 0;
+  return DeviceStatus::kOk;
+}
+
+CalibrationStatus OpenHapticsDevice::CheckCalibration() {
+  Session& s = *session_;
+  if (!s.running) {
+    hdMakeCurrentDevice(s.device);
+    hdBeginFrame(s.device);
+    s.calibration.store(Calibrate(s.calibration_styles));
+    hdEndFrame(s.device);
+    s.Record(DrainErrors());
+  }
+  return ToStatus(s.calibration.load());
+}
+
+DeviceStatus OpenHapticsDevice::StartServo() {
+  Session& s = *session_;
+  CheckCalibration();  // tells the loop whether it still has to watch the calibration
+  hdMakeCurrentDevice(s.device);
+  hdEnable(HD_FORCE_OUTPUT);
+  hdEnable(HD_MAX_FORCE_CLAMPING);  // the device's own clamp, behind the safety layer's
+  hdSetSchedulerRate(static_cast<HDulong>(options_.scheduler_rate_hz));
+  HDErrorInfo error = DrainErrors();
+  if (HD_DEVICE_ERROR(error)) {
+    s.Record(error);
+    return DeviceStatus::kCommError;
+  }
+  s.tick = 0;
+  s.fault_pending = false;
+  s.ended.store(false);
+  s.servo = hdScheduleAsynchronous(&Session::Servo, this, HD_MAX_SCHEDULER_PRIORITY);
+  error = DrainErrors();
+  if (HD_DEVICE_ERROR(error)) {
+    s.Record(error);
+    return DeviceStatus::kCommError;
+  }
+  hdStartScheduler();
+  error = DrainErrors();
+  if (HD_DEVICE_ERROR(error)) {
+    s.Record(error);
+    hdStopScheduler();
+    hdUnschedule(s.servo);
+    DrainErrors();
+    return DeviceStatus::kCommError;
+  }
+  s.running = true;
+  return DeviceStatus::kOk;
+}
+
+// The SDK's shutdown order: stop the scheduler (no tick runs after it returns), then remove the
+// callback, unless it already removed itself by returning HD_CALLBACK_DONE.
+void OpenHapticsDevice::StopServo() noexcept {
+  Session& s = *session_;
+  hdStopScheduler();
+  if (!s.ended.load()) hdUnschedule(s.servo);
+  s.Record(DrainErrors());
+  s.running = false;
+}
+
+void OpenHapticsDevice::CloseBackend() noexcept {
+  Session& s = *session_;
+  hdDisableDevice(s.device);
+  s.Record(DrainErrors());
+  s.device = HD_INVALID_HANDLE;
+}
+
+}  // namespace cosmems

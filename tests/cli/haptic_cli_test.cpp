@@ -1,0 +1,65 @@
+// The haptic analysis through the command line: the default scene's scripted stylus presses the
+// tip onto the substrate; as fast as possible (realtime = false) the run is deterministic.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli_test_support.hpp"
+
+namespace cosmems {
+namespace {
+
+using testing::ExpectContains;
+using testing::InvalidInput;
+using testing::ReadLines;
+using testing::RunJson;
+using testing::TempDirectory;
+
+const std::vector<std::string> kFast = {"--set", "device.realtime=false", "--set",
+                                        "analysis.duration=2.0"};
+
+std::vector<std::string> Args(std::vector<std::string> args) {
+  args.insert(args.end(), kFast.begin(), kFast.end());
+  return args;
+}
+
+TEST(HapticCliTest, TheScriptedPressTouchesTheSubstrateWithinTheDeviceLimits) {
+  const TempDirectory dir;
+  const nlohmann::json json =
+      RunJson(Args({"run", "cantilever-haptic", "--json", "--out", dir.path().string()}));
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_EQ(json.at("ticks").get<long>(), 2000);  // 2 s at 1 kHz
+  EXPECT_FALSE(json.at("paced").get<bool>());
+  EXPECT_EQ(json.at("deadline_misses").get<long>(), 0);
+  const double limit = json.at("force_limit_n").get<double>();
+  EXPECT_DOUBLE_EQ(limit, 0.88);  // the Omni's continuous force
+  EXPECT_LE(json.at("max_device_force_n").get<double>(), limit * (1 + 1e-12));
+  EXPECT_GT(json.at("max_device_force_n").get<double>(), 0.1 * limit);  // it was felt
+  EXPECT_GE(json.at("proximity_warnings").get<long>(), 1);
+  EXPECT_GE(json.at("contact_events").at("contacts").get<long>(), 1);
+  EXPECT_EQ(json.at("physics").at("failed_ticks").get<long>(), 0);
+  const std::vector<std::string> lines = ReadLines(dir.path() / "device_forces.csv");
+  ASSERT_EQ(lines.size(), 2001u);
+  EXPECT_EQ(lines[0], "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n");
+  // The same run again gives the same forces, tick for tick.
+  const TempDirectory again;
+  RunJson(Args({"run", "cantilever-haptic", "--json", "--out", again.path().string()}));
+  EXPECT_EQ(ReadLines(again.path() / "device_forces.csv"), lines);
+}
+
+TEST(HapticCliTest, RefusesWhatItCannotDriveByName) {
+  ExpectContains(
+      InvalidInput(Args({"run", "cantilever-haptic", "--set", "device.backend=\"openhaptics\""})),
+      "device.backend = \"openhaptics\"");
+  ExpectContains(
+      InvalidInput(Args({"run", "cantilever-haptic", "--set", "device.force_scale=1e9"})),
+      "device.force_scale = 1");
+  ExpectContains(
+      InvalidInput(Args({"run", "cantilever-haptic", "--set", "device.trajectory=\"spiral\""})),
+      "device.trajectory");
+}
+
+}  // namespace
+}  // namespace cosmems

@@ -1,0 +1,86 @@
+// The beam the hand touches: a press on the tip against the closed form of two springs in series,
+// the local model the servo loop extrapolates with, and "Reset Failure" of a beam stuck by the
+// Casimir force.
+#include "cosmems/haptics/haptic_beam.hpp"
+
+#include <gtest/gtest.h>
+
+#include "haptic_test_beam.hpp"
+
+namespace cosmems {
+namespace {
+
+constexpr double kRadius = 2e-6, kThickness = 2e-6;
+
+// The probe centre over the tip with its lowest point `depth` below the undeformed upper face.
+Eigen::Vector3d OverTip(double depth) {
+  return Eigen::Vector3d(test::kReferenceLength, 0.5 * kThickness - depth + kRadius, 0.0);
+}
+
+TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
+  const BeamModel<2> model = test::HapticCantilever();
+  const double k_c = 5.0, k_tip = test::ReferenceTipStiffness();
+  HapticBeam<2> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  const double depth = 0.5e-6;
+  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk);
+  const double series = k_c * k_tip / (k_c + k_tip);
+  // Hermite elements are exact for a tip load; rho_inf = 0 leaves the static state after a few
+  // 100 us steps, the first mode's period being 14.5 us. 1e-9: round-off in the internal units.
+  const LocalModel& local = beam.local_model();
+  ASSERT_TRUE(local.valid);
+  EXPECT_NEAR(local.force_n, series * depth, 1e-9 * series * depth);
+  EXPECT_NEAR(local.stiffness_n_per_m, series, 1e-9 * series);
+  EXPECT_EQ(local.clearance_m, 0.0);
+  // The local model predicts the next press: the problem is linear, so exactly.
+  const double deeper = 0.8e-6;
+  const double predicted = local.ForceAt(OverTip(deeper));
+  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(deeper), 0.0), Status::kOk);
+  EXPECT_NEAR(beam.local_model().force_n, predicted, 1e-9 * predicted);
+  // Lifted 1 um clear: no force, the clearance is known.
+  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(-1e-6), 0.0), Status::kOk);
+  EXPECT_EQ(beam.local_model().force_n, 0.0);
+  EXPECT_NEAR(beam.local_model().clearance_m, 1e-6, 1e-12);
+}
+
+// Pressed onto the substrate at the tip, then swept toward the clamp, the stylus lays the beam
+// down; lifted, it leaves it stuck in the S shape whose free span s balances the adhesion,
+// Gamma = 3 E t^3 g^2 / (2 s^4): s = 142 um here.
+TEST(HapticBeamTest, LaidDownByTheStylusItStaysStuckUntilReset) {
+  const BeamModel<2> model = test::HapticCantilever();
+  const double gap = test::kHapticGap;
+  // The Casimir pressure zips the beam down behind the probe.
+  test::HapticSurface forces = test::MakeHapticSurface(model);
+  // A stiff coupling (50 N/m, 60 times the tip's stiffness) lays the beam down within a 3 um
+  // press; a softer one needs the hand to travel farther.
+  HapticBeam<2> beam(model, ProbeOptions{kRadius, 50.0}, &forces, &forces.get<0>());
+  auto at = [](double x, double depth) {
+    return Eigen::Vector3d(x, 0.5 * kThickness - depth + kRadius, 0.0);
+  };
+  const double depth = 3e-6;
+  for (int tick = 0; tick <= 200; ++tick) {
+    ASSERT_EQ(beam.Advance(at(test::kReferenceLength, depth * tick / 200.0), 0.0), Status::kOk);
+  }
+  for (int tick = 0; tick <= 200; ++tick) {  // sweep from the tip to midspan
+    const double x = test::kReferenceLength * (1.0 - 0.5 * tick / 200.0);
+    ASSERT_EQ(beam.Advance(at(x, depth), 0.0), Status::kOk);
+  }
+  for (int tick = 0; tick <= 200; ++tick) {  // lift 5 um clear
+    ASSERT_EQ(beam.Advance(at(0.5 * test::kReferenceLength, depth - 8e-6 * tick / 200.0), 0.0),
+              Status::kOk);
+  }
+  HapticFrame frame = beam.MakeFrame();
+  EXPECT_TRUE(frame.contact.Stuck());
+  EXPECT_EQ(beam.local_model().force_n, 0.0);
+  // The S-shape's span within two 10 um elements (contact acts at the nodes).
+  EXPECT_NEAR(frame.contact.detached_length_m, 142e-6, 20e-6);
+  EXPECT_LT(frame.deflection_m[20], -0.9 * gap);
+  EXPECT_GE(frame.events.stuck, 1);
+  ASSERT_EQ(beam.Reset(), Status::kOk);
+  ASSERT_EQ(beam.Advance(at(0.5 * test::kReferenceLength, -5e-6), 0.0), Status::kOk);
+  beam.Fill(frame);
+  EXPECT_EQ(frame.contact.state, ContactState::kFree);
+  EXPECT_LT(std::abs(frame.deflection_m[20]), 1e-3 * gap);
+}
+
+}  // namespace
+}  // namespace cosmems

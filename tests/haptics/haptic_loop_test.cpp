@@ -1,0 +1,116 @@
+// The servo client that lets a hand touch the beam: the scaled force it asks for, the same
+// history run to run with the physics in the servo tick, and the physics on its own thread
+// (also run under ThreadSanitizer in cosmems_tsan_tests).
+#include "cosmems/haptics/haptic_loop.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "haptic_test_beam.hpp"
+
+namespace cosmems {
+namespace {
+
+constexpr double kRadius = 2e-6, kThickness = 2e-6, kCoupling = 5.0;
+
+// 1 um of micro travel is 5 mm of hand travel; 1 uN is felt as 0.2 N.
+HapticLoopOptions Options(PhysicsThread physics) {
+  HapticLoopOptions options;
+  options.scaling.position_scale = 5000.0;
+  options.scaling.force_scale = 2e5;
+  options.scaling.device_origin_m = Eigen::Vector3d(-0.1, 0.0, 0.0);  // the clamp 100 mm left
+  options.physics = physics;
+  return options;
+}
+
+// The stylus over the tip going down at 5 mm/s (1 um/s in the micro world): the probe's lowest
+// point starts 2 um above the beam's upper face and touches it at 2 s.
+DeviceState Stylus(const HapticLoopOptions& options, int tick) {
+  DeviceState state;
+  state.tick = static_cast<std::uint64_t>(tick);
+  state.time_s = 1e-3 * tick;
+  const double lowest_micro = 0.5 * kThickness + 2e-6 - 1e-6 * state.time_s;
+  state.position_m =
+      options.scaling.ToDevice(Eigen::Vector3d(test::kReferenceLength, lowest_micro + kRadius, 0));
+  state.velocity_m_s = Eigen::Vector3d(0.0, -5e-3, 0.0);
+  return state;
+}
+
+std::vector<double> ServoForces(PhysicsThread physics, int ticks) {
+  const BeamModel<2> model = test::HapticCantilever();
+  HapticBeam<2> beam(model, ProbeOptions{kRadius, kCoupling}, nullptr, nullptr);
+  const HapticLoopOptions options = Options(physics);
+  HapticLoop<2> loop(beam, options);
+  std::vector<double> forces;
+  for (int tick = 0; tick < ticks; ++tick) {
+    ForceCommand command;
+    loop.Tick(Stylus(options, tick), command);
+    EXPECT_TRUE(command.valid);
+    EXPECT_EQ(command.age_s, 0.0);
+    forces.push_back(command.force_n.y());
+  }
+  return forces;
+}
+
+TEST(HapticLoopTest, TheHandFeelsTheScaledSeriesSpringAndTheSameForcesEveryRun) {
+  const std::vector<double> first = ServoForces(PhysicsThread::kServo, 3000);
+  EXPECT_EQ(first, ServoForces(PhysicsThread::kServo, 3000));  // bit for bit
+  const double k_tip = test::ReferenceTipStiffness();
+  const double series = kCoupling * k_tip / (kCoupling + k_tip);
+  for (int tick : {1500, 2500, 2999}) {
+    const double depth = std::max(0.0, 1e-6 * (1e-3 * tick) - 2e-6);  // micro depth
+    // Quasi-static: the probe descends 1 nm a tick, far slower than the beam's 14.5 us period.
+    EXPECT_NEAR(first[static_cast<std::size_t>(tick)], 2e5 * series * depth,
+                1e-6 * 2e5 * series * 1e-6 + 1e-12);
+  }
+}
+
+TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
+  const BeamModel<2> model = test::HapticCantilever();
+  HapticBeam<2> beam(model, ProbeOptions{kRadius, kCoupling}, nullptr, nullptr);
+  const HapticLoopOptions options = Options(PhysicsThread::kOwn);
+  HapticLoop<2> loop(beam, options);
+  loop.StartPhysics(1e-3);
+  std::atomic<bool> done{false};
+  long frames = 0;
+  double last_time = -1.0;
+  bool time_went_back = false;
+  std::thread display([&] {
+    while (!done) {
+      if (loop.UpdateFrame()) {
+        ++frames;
+        time_went_back |= loop.frame().time_s < last_time;
+        last_time = loop.frame().time_s;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(33));
+    }
+  });
+  int valid = 0;
+  double force = 0.0;
+  for (int tick = 0; tick < 3000; tick += 10) {  // a 100 Hz "servo loop", 10 ms of hand a tick
+    ForceCommand command;
+    loop.Tick(Stylus(options, tick), command);
+    valid += command.valid;
+    force = command.force_n.y();
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  done = true;
+  display.join();
+  loop.StopPhysics();
+  EXPECT_GT(valid, 0);
+  EXPECT_GT(frames, 0);
+  EXPECT_FALSE(time_went_back);
+  EXPECT_GT(loop.physics_stats().ticks, 0u);
+  EXPECT_EQ(loop.failed_ticks(), 0u);
+  // The last command came from a local model at most a few ticks old: within 10 % of the force
+  // at the stylus's final depth (the model is exact in depth; only its age differs).
+  const double k_tip = test::ReferenceTipStiffness();
+  const double expected = 2e5 * kCoupling * k_tip / (kCoupling + k_tip) * (1e-6 * 2.99 - 2e-6);
+  EXPECT_NEAR(force, expected, 0.1 * expected);
+}
+
+}  // namespace
+}  // namespace cosmems

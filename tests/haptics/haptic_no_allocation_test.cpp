@@ -1,0 +1,44 @@
+// The servo tick of the haptic scene allocates nothing: the stylus presses the cantilever's tip
+// onto the substrate (contact, stiction, Casimir), holds and lifts off, with the physics inside
+// the tick and the safety layer after it.
+#include <gtest/gtest.h>
+
+#include "allocation_counter.hpp"
+#include "cosmems/haptics/built_in_specs.hpp"
+#include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/haptics/safety_layer.hpp"
+#include "haptics/haptic_test_beam.hpp"
+
+namespace cosmems {
+namespace {
+
+TEST(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing) {
+  const BeamModel<2> model = test::HapticCantilever();
+  test::HapticSurface forces = test::MakeHapticSurface(model);
+  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>());
+  HapticLoopOptions options;
+  options.scaling.position_scale = 5000.0;
+  options.scaling.force_scale = 2e5;
+  HapticLoop<2> loop(beam, options);
+  SafetyLayer safety(SafetyOptions{}, BuiltInSpecs("PHANTOM Omni"));
+  int tick = 0;
+  // 300 ticks down to 4 um below the upper face (past the 2 um gap), 300 back up 3 um clear.
+  const long allocations = test::AllocationsDuring(600, [&] {
+    const double s = tick < 300 ? tick / 300.0 : 1.0 - 1.75 * (tick - 300) / 300.0;
+    DeviceState state;
+    state.tick = static_cast<std::uint64_t>(tick);
+    state.time_s = 1e-3 * tick++;
+    state.position_m = options.scaling.ToDevice(
+        Eigen::Vector3d(test::kReferenceLength, 1e-6 - 4e-6 * s + 2e-6, 0.0));
+    ForceCommand command;
+    loop.Tick(state, command);
+    (void)safety.Filter(state, command);
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(loop.failed_ticks(), 0u);
+  ASSERT_TRUE(loop.UpdateFrame());
+  EXPECT_GE(loop.frame().events.stuck, 1);
+}
+
+}  // namespace
+}  // namespace cosmems

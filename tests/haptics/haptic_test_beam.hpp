@@ -1,0 +1,40 @@
+#pragma once
+
+// The reference cantilever (silicon, 200 x 20 x 2 um, 20 planar elements) the haptic tests
+// touch, with its tip stiffness 3EI/L^3.
+#include "cosmems/beam/beam_model.hpp"
+#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/surface/gap_force.hpp"
+#include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/surface/substrate_contact.hpp"
+#include "test_beams.hpp"
+
+namespace cosmems::test {
+
+inline BeamModel<2> HapticCantilever() {
+  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kReferenceLength, Silicon(),
+                                    ReferenceSection(), 20, 0));
+}
+
+inline double ReferenceTipStiffness() {
+  const double inertia = 20e-6 * 8e-18 / 12.0;  // b t^3 / 12
+  return 3.0 * 169e9 * inertia / (kReferenceLength * kReferenceLength * kReferenceLength);
+}
+
+/// The paper's surface: contact and stiction (0.02 J/m^2, asperities 20 nm high) with a substrate
+/// 2 um below, and the Casimir force.
+using HapticSurface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
+constexpr double kHapticGap = 2e-6;
+
+inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
+  ContactOptions contact;
+  contact.gap = kHapticGap;
+  contact.separation = 2e-8;
+  contact.stiction = true;
+  contact.adhesion_energy = 0.02;
+  return HapticSurface(SubstrateContact<2>(model, contact),
+                       GapForce<2, CasimirPressure>(model, CasimirPressure{},
+                                                    GapSpan{kHapticGap, 0.0, kReferenceLength}));
+}
+
+}  // namespace cosmems::test
