@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     std::cerr << "omni_cantilever: " << ToString(c) << "\n";
   }
   example::TouchableCantilever scene(device.specs(), PhysicsThread::kOwn);
-  scene.loop().StartPhysics(1.0 / device.specs().nominal_rate_hz);
+  scene.loop().StartPhysics();
   if (device.Start(scene.loop()) != DeviceStatus::kOk) {
     std::cerr << "omni_cantilever: cannot start: " << device.last_error().description << "\n";
     return 1;

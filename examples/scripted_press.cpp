@@ -22,7 +22,7 @@ int main() {
   options.specs = specs;
   ScriptedDevice device(MakeBuiltInTrajectory("press", press), options);
   if (device.Open() != DeviceStatus::kOk) return 1;
-  scene.loop().StartPhysics(1e-3);
+  scene.loop().StartPhysics();
   if (device.Start(scene.loop()) != DeviceStatus::kOk) return 1;
   int shown = 0;
   while (!device.Done()) {  // the display side, at 30 Hz

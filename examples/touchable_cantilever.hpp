@@ -28,8 +28,11 @@ class TouchableCantilever {
             GapForce<2, CasimirPressure>(model_, CasimirPressure{}, GapSpan{kGap, 0.0, kLength})) {
     const double k_tip = 3.0 * 169e9 * (20e-6 * 8e-18 / 12.0) / (kLength * kLength * kLength);
     ProbeOptions probe{kThickness, 25.0 * k_tip};
-    beam_ = std::make_unique<HapticBeam<2>>(model_, probe, &forces_, &forces_.get<0>());
-    HapticLoopOptions& options = options_;
+    HapticPhysicsOptions physics_options;
+    physics_options.tick_s = 1.0 / specs.nominal_rate_hz;  // one physics tick a servo tick
+    beam_ = std::make_unique<HapticBeam<2>>(model_, probe, &forces_, &forces_.get<0>(),
+                                            RayleighDamping{}, physics_options);
+    HapticLoopOptions options;
     options.physics = physics;
     options.scaling.position_scale = 5000.0;
     options.scaling.force_scale =
@@ -42,7 +45,6 @@ class TouchableCantilever {
   }
 
   HapticLoop<2>& loop() { return *loop_; }
-  const HapticLoopOptions& options() const { return options_; }
 
  private:
   static ContactOptions Contact() {
@@ -57,7 +59,6 @@ class TouchableCantilever {
   BeamModel<2> model_;
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces_;
   std::unique_ptr<HapticBeam<2>> beam_;
-  HapticLoopOptions options_;
   std::unique_ptr<HapticLoop<2>> loop_;
 };
 

@@ -8,7 +8,6 @@
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
-#include "csv_file.hpp"
 #include "haptic_settings.hpp"
 #include "text_format.hpp"
 
@@ -47,9 +46,8 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   ScriptedDevice device(std::move(settings.trajectory), options);
 
   HapticResults r;
-  header.status = Status::kOk;
   if (device.Open() != DeviceStatus::kOk) throw std::runtime_error("scripted device: open failed");
-  loop.StartPhysics(physics.tick_s);
+  loop.StartPhysics();
   if (device.Start(loop) != DeviceStatus::kOk) {
     loop.StopPhysics();
     throw std::runtime_error("scripted device: start failed");
@@ -148,15 +146,11 @@ void HapticReport::PrintResults(std::ostream& out) const {
 }
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {
-  CsvFile csv(directory / "device_forces.csv", "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n");
-  Eigen::MatrixXd rows(static_cast<Eigen::Index>(results_.forces.size()), 7);
-  for (std::size_t i = 0; i < results_.forces.size(); ++i) {
-    const ScriptedSample& s = results_.forces[i];
-    rows.row(static_cast<Eigen::Index>(i)) << s.time_s, s.position_m.transpose(),
-        s.force_n.transpose();
+  try {
+    WriteSamplesCsv((directory / "device_forces.csv").string(), results_.forces);
+  } catch (const std::runtime_error& e) {
+    throw CliInputError(e.what());
   }
-  csv.Rows(rows);
-  csv.Close();
 }
 
 }  // namespace cosmems::internal

@@ -85,16 +85,14 @@ void HapticDevice::PublishFigures() {
   figures_->Publish();
 }
 
-LoopStats HapticDevice::stats() const {
+HapticDevice::Figures HapticDevice::LatestFigures() const {
   std::lock_guard<std::mutex> lock(figures_reader_);
   if (figures_ && figures_->Update()) last_figures_ = figures_->Front();
-  return last_figures_.loop;
+  return last_figures_;
 }
 
-SafetyCounters HapticDevice::safety_counters() const {
-  std::lock_guard<std::mutex> lock(figures_reader_);
-  if (figures_ && figures_->Update()) last_figures_ = figures_->Front();
-  return last_figures_.safety;
-}
+LoopStats HapticDevice::stats() const { return LatestFigures().loop; }
+
+SafetyCounters HapticDevice::safety_counters() const { return LatestFigures().safety; }
 
 }  // namespace cosmems

@@ -384,6 +384,9 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
   r.Require(scene.analysis.type != AnalysisType::kPullin, "analysis.type",
             "\"pullin\" is not available for model.theory = \"cosserat\" (\"linear\", or "
             "\"stretching\" for a bridge)");
+  r.Require(scene.analysis.type != AnalysisType::kHaptic, "analysis.type",
+            "\"haptic\" is not available for model.theory = \"cosserat\" (\"linear\", or "
+            "\"stretching\" for a bridge)");
   RequireNewtonIntegrator(r, scene, "model.theory = \"cosserat\"");
   if (scene.analysis.type != AnalysisType::kTransient) return;
   const std::optional<DampingEffect>& damping = scene.effects.damping;
@@ -450,12 +453,9 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   RequireNewtonIntegrator(r, scene, first);
 }
 
-// The haptic analysis touches the beam through the frame-element model: not the Cosserat rod.
+// The haptic analysis touches the full model (the Cosserat rod is refused in CheckCosserat).
 void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   if (scene.analysis.type != AnalysisType::kHaptic) return;
-  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
-            "\"cosserat\" is not available for the haptic analysis (use \"linear\" or "
-            "\"stretching\")");
   r.Require(scene.model.modes == 0, "model.modes",
             "must be 0 for the haptic analysis (the full model is touched)");
 }

@@ -2,16 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <future>
-#include <iomanip>
-#include <limits>
-#include <locale>
 #include <stdexcept>
 #include <system_error>
 
+#include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/haptics/realtime_thread.hpp"
-#include "periodic_deadline.hpp"
 
 namespace cosmems {
 namespace {
@@ -180,18 +176,6 @@ std::vector<ScriptedSample> ScriptedDevice::Recorded() const {
                                      samples_.begin() + static_cast<std::ptrdiff_t>(rows));
 }
 
-void ScriptedDevice::WriteCsv(const std::string& path) const {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error(path + ": cannot open for writing");
-  out.imbue(std::locale::classic());
-  out << std::setprecision(std::numeric_limits<double>::max_digits10);
-  out << "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n\n";
-  for (const ScriptedSample& s : Recorded()) {
-    out << s.time_s << ',' << s.position_m.x() << ',' << s.position_m.y() << ',' << s.position_m.z()
-        << ',' << s.force_n.x() << ',' << s.force_n.y() << ',' << s.force_n.z() << '\n';
-  }
-  out.flush();
-  if (!out) throw std::runtime_error(path + ": writing failed");
-}
+void ScriptedDevice::WriteCsv(const std::string& path) const { WriteSamplesCsv(path, Recorded()); }
 
 }  // namespace cosmems

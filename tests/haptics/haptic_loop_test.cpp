@@ -73,7 +73,7 @@ TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   HapticBeam<2> beam(model, ProbeOptions{kRadius, kCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
   HapticLoop<2> loop(beam, options);
-  loop.StartPhysics(1e-3);
+  loop.StartPhysics();
   std::atomic<bool> done{false};
   long frames = 0;
   double last_time = -1.0;

@@ -87,6 +87,8 @@ class HapticBeam {
   const LocalModel& local_model() const { return local_; }
   Status status() const { return status_; }
   double time_s() const { return integrator_->time() * model_.units().time; }
+  /// Simulated time one Advance() covers [s].
+  double tick_s() const { return options_.tick_s; }
   const BeamModel<Dim>& model() const { return model_; }
   /// Displacement (reduced dofs, internal units).
   const Eigen::VectorXd& displacement() const { return integrator_->displacement(); }

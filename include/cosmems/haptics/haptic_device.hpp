@@ -75,6 +75,7 @@ class HapticDevice {
     SafetyCounters safety;
   };
   void PublishFigures();
+  Figures LatestFigures() const;
 
   SafetyOptions safety_options_;
   DeviceSpecs specs_;

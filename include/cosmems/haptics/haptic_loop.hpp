@@ -1,7 +1,5 @@
 #pragma once
 
-#include <time.h>
-
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -10,6 +8,7 @@
 #include "cosmems/haptics/hand_scaling.hpp"
 #include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/loop_stats.hpp"
+#include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/haptics/servo_client.hpp"
 #include "cosmems/haptics/triple_buffer.hpp"
 
@@ -38,18 +37,19 @@ class HapticLoop final : public ServoClient {
  public:
   HapticLoop(HapticBeam<Dim>& beam, const HapticLoopOptions& options)
       : beam_(beam), options_(ValidOptions(options)), frames_(beam.MakeFrame()) {
-    physics_.Start(1e-3, options.physics == PhysicsThread::kOwn, false);
+    physics_.Start(beam.tick_s(), options.physics == PhysicsThread::kOwn, false);
   }
   ~HapticLoop() override { StopPhysics(); }
   HapticLoop(const HapticLoop&) = delete;
   HapticLoop& operator=(const HapticLoop&) = delete;
 
-  /// Starts the physics thread (PhysicsThread::kOwn; nothing otherwise). Before the device.
-  void StartPhysics(double tick_s) {
+  /// Starts the physics thread (PhysicsThread::kOwn; nothing otherwise), one beam tick a
+  /// period. Before the device.
+  void StartPhysics() {
     if (options_.physics != PhysicsThread::kOwn || thread_.joinable()) return;
-    physics_.Start(tick_s, true, false);
+    physics_.Start(beam_.tick_s(), true, false);
     stop_ = false;
-    thread_ = std::thread([this, tick_s] { RunPhysics(tick_s); });
+    thread_ = std::thread([this] { RunPhysics(); });
   }
   /// Stops and joins the physics thread (after the device has stopped).
   void StopPhysics() {
@@ -112,23 +112,16 @@ class HapticLoop final : public ServoClient {
     physics_.Record(start, (Now() - start) * 1e6);
   }
 
-  // The physics thread: one tick per period on absolute deadlines (no drift, no busy wait), on
-  // the newest probe position the servo loop published.
-  void RunPhysics(double tick_s) {
-    timespec next{};
-    clock_gettime(CLOCK_MONOTONIC, &next);
-    const long period_ns = static_cast<long>(tick_s * 1e9);
+  // The physics thread: one tick a period on absolute deadlines (no drift, no busy wait), on the
+  // newest probe position the servo loop published.
+  void RunPhysics() {
+    PeriodicDeadline deadline(1.0 / beam_.tick_s());
     ProbeInput input;
     while (!stop_.load(std::memory_order_relaxed)) {
       if (probes_.Update()) input = probes_.Front();
       RunPhysicsTick(input);
       models_.Publish(beam_.local_model());
-      next.tv_nsec += period_ns;
-      while (next.tv_nsec >= 1000000000L) {
-        next.tv_nsec -= 1000000000L;
-        ++next.tv_sec;
-      }
-      clock_nanosleep(CLOCK_MONOTONIC, TIMER_ABSTIME, &next, nullptr);
+      deadline.SleepUntilNext();
     }
   }
 
