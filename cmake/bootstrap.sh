@@ -2,6 +2,7 @@
 # One-step set-up and entry points on a fresh Debian 12 machine:
 #   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever-haptic)
 #   bash cmake/bootstrap.sh test            build, then run the whole test suite with CTest
+#   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks, then run one
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
 # otherwise prints the exact apt-get line and stops. COSMEMS_BUILD_DIR overrides build/release.
 set -euo pipefail
@@ -27,11 +28,29 @@ fi
 
 build_dir=${COSMEMS_BUILD_DIR:-build/release}
 jobs=$(nproc)
-cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build_dir" -j"$jobs"
+# The benchmarks are built by `bench` only: compiling them would take a third of the time `run`
+# and `test` need.
+configure() {
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DCOSMEMS_BUILD_BENCHMARKS="$1" >/dev/null
+}
 
 case "${1:-}" in
-  run) shift; exec "$build_dir/src/cli/cosmems" run cantilever-haptic "$@" ;;
-  test) exec ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" ;;
-  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test" >&2; exit 2 ;;
+  run)
+    shift
+    configure OFF
+    cmake --build "$build_dir" -j"$jobs" --target cosmems
+    exec "$build_dir/src/cli/cosmems" run cantilever-haptic "$@" ;;
+  test)
+    configure OFF
+    cmake --build "$build_dir" -j"$jobs"
+    exec ctest --test-dir "$build_dir" --output-on-failure -j"$jobs" ;;
+  bench)
+    shift
+    configure ON
+    cmake --build "$build_dir" -j"$jobs"
+    if [ $# -eq 0 ]; then ls "$build_dir/bench"; exit 0; fi
+    name=$1; shift
+    exec "$build_dir/bench/$name" "$@" ;;
+  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]]" >&2
+     exit 2 ;;
 esac

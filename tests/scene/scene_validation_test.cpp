@@ -315,6 +315,24 @@ INSTANTIATE_TEST_SUITE_P(
                  "effects.contact.tolerance = -1e-09", "must be positive"}),
     CaseName);
 
+// The haptic analysis: its rate, the model it touches, and the [device] keys.
+INSTANTIATE_TEST_SUITE_P(
+    Haptic, SceneValidationTest,
+    ::testing::Values(
+        BadScene{"rate", With("analysis.type", "\"haptic\"").Set("analysis.rate", "750.0"),
+                 "analysis.rate = 750.0", "must be 500, 1000 or 2000"},
+        BadScene{"modes", With("analysis.type", "\"haptic\"").Set("model.modes", "4"),
+                 "model.modes = 4", "must be 0 for the haptic analysis"},
+        BadScene{"cosserat",
+                 With("analysis.type", "\"haptic\"")
+                     .Set("model.theory", "\"cosserat\"")
+                     .Set("model.dimension", "3"),
+                 "analysis.type = \"haptic\"", "not available for model.theory = \"cosserat\""},
+        BadScene{"position_scale",
+                 With("analysis.type", "\"haptic\"").Set("device.position_scale", "-1.0"),
+                 "device.position_scale = -1.0", "must be positive"}),
+    CaseName);
+
 // The cantilever as a pull-in analysis over its 2 um gap.
 SceneText Pullin() {
   return With("analysis.type", "\"pullin\"").Set("effects.electrostatic.fringing", "false");
