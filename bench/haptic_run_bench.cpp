@@ -3,10 +3,17 @@
 // clock at 1 kHz, the physics on its own thread, as `cosmems run cantilever-haptic` runs it.
 // Counters: the servo loop's achieved rate, its tick compute times and deadline misses, and the
 // physics thread's tick times; the servo ticks' compute-time histogram goes to stderr.
+// BM_BareTimer is the machine's floor: the same paced real-time thread doing no work at all, so
+// that late wake-ups the machine itself causes are told apart from the loop's.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <iostream>
+#include <thread>
 
+#include "cosmems/haptics/loop_stats.hpp"
+#include "cosmems/haptics/periodic_deadline.hpp"
+#include "cosmems/haptics/realtime_thread.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "haptic_report.hpp"
 
@@ -47,6 +54,32 @@ void BM_PacedHapticRun(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_PacedHapticRun)->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_BareTimer(benchmark::State& state) {
+  for (auto _ : state) {
+    LoopStats stats;
+    std::thread thread([&stats] {
+      const bool realtime = MakeThisThreadRealtime().fifo;
+      LoopStatsRecorder recorder;
+      recorder.Start(1e-3, true, realtime);
+      PeriodicDeadline deadline(1000.0);
+      for (int tick = 0; tick <= 10000; ++tick) {
+        deadline.SleepUntilNext();
+        recorder.Record(
+            std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+                .count(),
+            0.0);
+      }
+      stats = recorder.stats();
+    });
+    thread.join();
+    state.counters["rate_hz"] = stats.rate_hz;
+    state.counters["realtime"] = stats.realtime ? 1 : 0;
+    state.counters["deadline_misses"] = static_cast<double>(stats.deadline_misses);
+    state.counters["period_max_us"] = stats.period_max_us;
+  }
+}
+BENCHMARK(BM_BareTimer)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace cosmems

@@ -33,13 +33,63 @@ TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   EXPECT_EQ(local.clearance_m, 0.0);
   // The local model predicts the next press: the problem is linear, so exactly.
   const double deeper = 0.8e-6;
-  const double predicted = local.ForceAt(OverTip(deeper));
+  const double predicted = local.ForceAt(OverTip(deeper)).y();
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(deeper), 0.0), Status::kOk);
   EXPECT_NEAR(beam.local_model().force_n, predicted, 1e-9 * predicted);
   // Lifted 1 um clear: no force, the clearance is known.
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(-1e-6), 0.0), Status::kOk);
   EXPECT_EQ(beam.local_model().force_n, 0.0);
   EXPECT_NEAR(beam.local_model().clearance_m, 1e-6, 1e-12);
+}
+
+// The other faces: pushed up from under the tip, the beam is the same spring; pushed sideways at
+// the tip of a 3-D beam, it bends across its width, 3 E I_z / L^3 with I_z = t b^3 / 12, 100 times
+// stiffer, in series with the coupling.
+TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
+  const double k_c = 5.0, depth = 0.5e-6;
+  {
+    const BeamModel<2> model = test::HapticCantilever();
+    HapticBeam<2> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+    const Eigen::Vector3d under(test::kReferenceLength, -0.5 * kThickness + depth - kRadius, 0.0);
+    for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(under, 0.0), Status::kOk);
+    const double k_tip = test::ReferenceTipStiffness(), series = k_c * k_tip / (k_c + k_tip);
+    const LocalModel& local = beam.local_model();
+    EXPECT_EQ(local.normal, -Eigen::Vector3d::UnitY());
+    // 1e-9: round-off in the internal units (the static state is exact, as above).
+    EXPECT_NEAR(local.force_n, series * depth, 1e-9 * series * depth);
+    EXPECT_NEAR(local.stiffness_n_per_m, series, 1e-9 * series);
+    EXPECT_GT(beam.MakeFrame().deflection_m[20], 0.0);  // lifted
+  }
+  const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 20, 0));
+  HapticBeam<3> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  const double width = 20e-6;
+  const Eigen::Vector3d beside(test::kReferenceLength, 0.0, 0.5 * width + kRadius - depth);
+  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(beside, 0.0), Status::kOk);
+  const double k_side = 100.0 * test::ReferenceTipStiffness(),
+               series = k_c * k_side / (k_c + k_side);
+  const LocalModel& local = beam.local_model();
+  EXPECT_EQ(local.normal, Eigen::Vector3d::UnitZ());
+  EXPECT_NEAR(local.force_n, series * depth, 1e-9 * series * depth);
+  EXPECT_NEAR(local.stiffness_n_per_m, series, 1e-9 * series);
+  EXPECT_NEAR(beam.MakeFrame().probe_force_n.z(), series * depth, 1e-9 * series * depth);
+}
+
+// A hand pressing the tip onto the substrate and 8 um on, four times the beam's thickness: the
+// probe keeps pushing the beam down, never through it, and every tick converges.
+TEST(HapticBeamTest, AHardPressHoldsTheBeamOnTheSubstrate) {
+  const BeamModel<2> model = test::HapticCantilever();
+  test::HapticSurface forces = test::MakeHapticSurface(model);
+  HapticBeam<2> beam(model, ProbeOptions{kRadius, 20.0}, &forces, &forces.get<0>());
+  for (int tick = 0; tick <= 400; ++tick) {
+    const double depth = 10e-6 * std::min(1.0, tick / 300.0);
+    ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk) << tick;
+    ASSERT_EQ(beam.local_model().normal, Eigen::Vector3d::UnitY()) << tick;
+  }
+  const HapticFrame frame = beam.MakeFrame();
+  EXPECT_LT(frame.deflection_m[20], -0.98 * test::kHapticGap);
+  EXPECT_GT(frame.probe_force_n.y(), 0.0);
+  EXPECT_TRUE(frame.contact.Stuck());
 }
 
 // Pressed onto the substrate at the tip, then swept toward the clamp, the stylus lays the beam

@@ -1,11 +1,14 @@
-// The probe's force and tangent against differences of its energy, and the press of a cantilever
-// tip against the two springs in series it is.
+// The probe against the beam's faces: the depth on every face against closed forms of smooth
+// deflections, contact exactly when the sphere meets the box, the push out through the nearest
+// face, a force continuous as the sphere rounds an edge, and the force and tangent against
+// differences of an energy written here.
 #include "cosmems/haptics/probe_contact.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "force_differences.hpp"
 #include "haptic_test_beam.hpp"
@@ -13,50 +16,260 @@
 namespace cosmems {
 namespace {
 
-constexpr double kThickness = 2e-6;
+constexpr double kThickness = 2e-6, kWidth = 20e-6, kRadius = 2e-6, kCoupling = 5.0;
+constexpr double kL = test::kReferenceLength;
 
-// The coupling's energy with w(x) interpolated here, independently of the class: the Hermite
-// cubics of element e on its nodal values (w1, theta1, w2, theta2), theta = dw/dx.
-double Energy(const BeamModel<2>& model, const Eigen::VectorXd& d, int e, double xi, double k,
-              double lowest) {
-  const UnitSystem& u = model.units();
-  auto value = [&](int node, NodalDof dof) {
-    const int r = model.dofs().Reduced(node, dof);
-    return r >= 0 ? d[r] : 0.0;
-  };
-  const double h = model.NodeX()[e + 1] - model.NodeX()[e];
-  const double w1 = value(e, NodalDof::kUy), t1 = value(e, NodalDof::kRz);
-  const double w2 = value(e + 1, NodalDof::kUy), t2 = value(e + 1, NodalDof::kRz);
-  const double w = (2 * xi * xi * xi - 3 * xi * xi + 1) * w1 +
-                   h * (xi * xi * xi - 2 * xi * xi + xi) * t1 +
-                   (-2 * xi * xi * xi + 3 * xi * xi) * w2 + h * (xi * xi * xi - xi * xi) * t2;
-  const double delta = w * u.length + 0.5 * kThickness - lowest;  // m
-  const double k_internal = k / (u.force / u.length);
-  const double delta_internal = std::max(0.0, delta / u.length);
-  return 0.5 * k_internal * delta_internal * delta_internal;
+BeamModel<3> SpatialCantilever() {
+  return BeamModel<3>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+                                    test::ReferenceSection(), 20, 0));
 }
 
-TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergy) {
-  const BeamModel<2> model = test::HapticCantilever();
-  const double k = 5.0, radius = 2e-6;
-  ProbeContact<2> probe(model, ProbeOptions{radius, k});
-  // Over element 13 at xi = 0.3; the sphere's lowest point 0.2 um below the undeformed face.
-  const double x = model.NodeX()[13] * model.units().length + 0.3 * 10e-6;
-  const double lowest = 0.5 * kThickness - 0.2e-6;
-  probe.MoveTo(Eigen::Vector3d(x, lowest + radius, 0.0));
+// u(x) = a x^2 + c x^3 [m], with a clamped root; Hermite cubics hold it exactly.
+struct Cubic {
+  double a = 0.0, c = 0.0;
+  double operator()(double x) const { return a * x * x + c * x * x * x; }
+  double Slope(double x) const { return 2 * a * x + 3 * c * x * x; }
+};
+
+// The state holding u_y = uy(x), u_z = uz(x) (slope -r_y in the x-z plane) and u_x = strain x.
+template <int Dim>
+Eigen::VectorXd SmoothState(const BeamModel<Dim>& model, Cubic uy, Cubic uz, double strain) {
+  const double unit = model.units().length;
   Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
-  for (int i = 0; i < d.size(); ++i) d[i] = -1e-3 * std::sin(0.3 * i);  // a wavy state
-  ASSERT_GT(probe.Penetration(d), 0.0);
-  // Central differences of a quadratic energy are exact up to round-off; h = 1e-6 of the
-  // internal unit balances truncation (zero here) against cancellation (1e-16 / 1e-6).
-  test::ExpectForceAndTangentMatchDifferences(
-      probe, d, model.Stiffness().bandwidth(),
-      [&](const Eigen::VectorXd& s) { return Energy(model, s, 13, 0.3, k, lowest); }, 1e-6, 1e-7);
+  for (std::size_t k = 0; k < model.NodeX().size(); ++k) {
+    const int node = static_cast<int>(k);
+    const double x = model.NodeX()[k] * unit;
+    auto set = [&](NodalDof dof, double value) {
+      if (FrameLayout<Dim>::kIndex[static_cast<int>(dof)] < 0) return;
+      const int r = model.dofs().Reduced(node, dof);
+      if (r >= 0) d[r] = value;
+    };
+    set(NodalDof::kUx, strain * x / unit);
+    set(NodalDof::kUy, uy(x) / unit);
+    set(NodalDof::kRz, uy.Slope(x));
+    set(NodalDof::kUz, uz(x) / unit);
+    set(NodalDof::kRy, -uz.Slope(x));
+  }
+  return d;
+}
+
+TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
+  const BeamModel<3> model = SpatialCantilever();
+  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  const Cubic uy{-20.0, 1e4}, uz{3.0, -2e3};
+  const double strain = 1e-4;
+  const Eigen::VectorXd d = SmoothState(model, uy, uz, strain);
+  const double x = 123.4e-6, depth = 0.1e-6;  // inside element 12
+  struct Case {
+    Eigen::Vector3d centre;
+    ProbeFace face;
+  };
+  const Case cases[] = {
+      {{x, uy(x) + 0.5 * kThickness + kRadius - depth, 3e-6}, ProbeFace::kUpper},
+      {{x, uy(x) - 0.5 * kThickness - kRadius + depth, -4e-6}, ProbeFace::kLower},
+      {{x, uy(x), uz(x) + 0.5 * kWidth + kRadius - depth}, ProbeFace::kPositiveZ},
+      {{x, uy(x) + 0.2e-6, uz(x) - 0.5 * kWidth - kRadius + depth}, ProbeFace::kNegativeZ},
+      {{kL * (1 + strain) + kRadius - depth, uy(kL), 1e-6}, ProbeFace::kLastEnd},
+      {{-kRadius + depth, 0.0, 0.0}, ProbeFace::kFirstEnd},
+  };
+  for (const Case& c : cases) {
+    probe.MoveTo(c.centre);
+    const ProbeTouch touch = probe.Touch(d);
+    EXPECT_EQ(touch.face, c.face) << c.centre.transpose();
+    // Within 1e-12 m: the cubics are exact, the rest is round-off of micrometre positions. The
+    // -z case sits 0.2 um off the section's centre: the side is taken unbounded in y.
+    EXPECT_NEAR(touch.depth_m, depth, 1e-12) << c.centre.transpose();
+    EXPECT_EQ(touch.normal, ProbeContact<3>::Normal(c.face));
+    EXPECT_NEAR(probe.Reaction(d).norm(), kCoupling * depth, 1e-12 * kCoupling);
+  }
+}
+
+// The box at the section under the centre: 0 <= x <= L, |y - w(x_c)| <= t/2, |z| <= b/2.
+double DistanceToBox(const Eigen::Vector3d& p, double w) {
+  const Eigen::Vector3d low(0.0, w - 0.5 * kThickness, -0.5 * kWidth);
+  const Eigen::Vector3d high(kL, w + 0.5 * kThickness, 0.5 * kWidth);
+  return (p - p.cwiseMax(low).cwiseMin(high)).norm();
+}
+
+TEST(ProbeContactTest, ItTouchesExactlyWhenTheSphereMeetsTheBox) {
+  const BeamModel<2> model = test::HapticCantilever();
+  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
+  const Cubic uy{-30.0, 5e3};
+  const Eigen::VectorXd d = SmoothState(model, uy, {}, 0.0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> along(kL - 40e-6, kL + 3e-6), across(-13e-6, 13e-6),
+      height(-5e-6, 5e-6);
+  int touching = 0, apart = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double x = along(random);
+    const Eigen::Vector3d p(x, uy(std::min(x, kL)) + height(random), across(random));
+    const double distance = DistanceToBox(p, uy(std::min(x, kL)));
+    if (std::abs(distance - kRadius) < 1e-12) continue;  // on the boundary: either is right
+    probe.MoveTo(p);
+    const bool touches = probe.Touch(d).depth_m > 0.0;
+    EXPECT_EQ(touches, distance < kRadius) << p.transpose();
+    (touches ? touching : apart) += 1;
+  }
+  EXPECT_GT(touching, 2000);  // both kinds well sampled
+  EXPECT_GT(apart, 2000);
+}
+
+TEST(ProbeContactTest, FromInsideItPushesOutThroughTheNearestFace) {
+  const BeamModel<3> model = SpatialCantilever();
+  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.2e-6, 9.5e-6));  // 0.5 um from the +z side, 0.8 the top
+  ProbeTouch touch = probe.Touch(d);
+  EXPECT_EQ(touch.face, ProbeFace::kPositiveZ);
+  EXPECT_NEAR(touch.depth_m, kRadius + 0.5e-6, 1e-15);
+  probe.MoveTo(Eigen::Vector3d(100e-6, -0.7e-6, 2e-6));  // 0.3 um above the lower face
+  touch = probe.Touch(d);
+  EXPECT_EQ(touch.face, ProbeFace::kLower);
+  EXPECT_NEAR(touch.depth_m, kRadius + 0.3e-6, 1e-15);
+}
+
+// A hand pressing hard sinks the sphere past the beam's mid-plane, where the lower face overlaps
+// it less than the upper one: the face it came in by keeps pushing until its overlap ends.
+TEST(ProbeContactTest, PressedPastTheMidPlaneItPushesThroughTheFaceItCameIn) {
+  const BeamModel<2> model = test::HapticCantilever();
+  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
+  const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const Eigen::Vector3d below_mid(100e-6, -0.5e-6, 0.0);
+  probe.MoveTo(below_mid);
+  EXPECT_EQ(probe.Touch(d).face, ProbeFace::kLower);  // met there first: the least overlap
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kThickness + kRadius - 0.1e-6, 0.0));
+  probe.Commit(d);
+  probe.MoveTo(below_mid);
+  ProbeTouch touch = probe.Touch(d);
+  EXPECT_EQ(touch.face, ProbeFace::kUpper);
+  EXPECT_NEAR(touch.depth_m, 0.5 * kThickness + 0.5e-6 + kRadius, 1e-15);
+  probe.Commit(d);
+  // Through the beam and out below, the hand still feels the upper face: its overlap has not ended.
+  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kThickness - kRadius - 0.1e-6, 0.0));
+  probe.Commit(d);
+  EXPECT_EQ(probe.Touch(d).face, ProbeFace::kUpper);
+  EXPECT_NEAR(probe.Touch(d).depth_m, kThickness + 2 * kRadius + 0.1e-6, 1e-15);
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kThickness + kRadius + 0.1e-6, 0.0));  // lifted off
+  probe.Commit(d);
+  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kThickness - kRadius + 0.1e-6, 0.0));  // in below
+  probe.Commit(d);
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5e-6, 0.0));  // and up past the mid-plane
+  touch = probe.Touch(d);
+  EXPECT_EQ(touch.face, ProbeFace::kLower);
+  EXPECT_NEAR(touch.depth_m, 0.5 * kThickness + 0.5e-6 + kRadius, 1e-15);
+}
+
+// The force's depth max(delta, 0) along a path in 1 nm steps: no step moves it by more than the
+// largest slope of the overlaps where they are positive (sqrt(r^2 - h^2) at h <= sqrt(3) um,
+// slope sqrt(3)) times the step.
+double LargestJump(ProbeContact<3>& probe, const Eigen::VectorXd& d, const Eigen::Vector3d& from,
+                   const Eigen::Vector3d& to) {
+  const int steps = 8000;
+  double previous = 0.0, largest = 0.0;
+  for (int i = 0; i <= steps; ++i) {
+    probe.MoveTo(from + (to - from) * i / steps);
+    const double depth = std::max(0.0, probe.Touch(d).depth_m);
+    if (i > 0) largest = std::max(largest, std::abs(depth - previous));
+    previous = depth;
+  }
+  return largest;
+}
+
+TEST(ProbeContactTest, TheForceIsContinuousAroundTheEdges) {
+  const BeamModel<3> model = SpatialCantilever();
+  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const double top = 0.5 * kThickness, side = 0.5 * kWidth, step = 1e-9;
+  // Over the tip's upper edge, over the side's upper edge, down past the side.
+  EXPECT_LT(LargestJump(probe, d, {kL - 4e-6, top + 1e-6, 0.0}, {kL + 4e-6, top + 1e-6, 0.0}),
+            1.8 * step);
+  EXPECT_LT(
+      LargestJump(probe, d, {100e-6, top + 1e-6, side - 4e-6}, {100e-6, top + 1e-6, side + 4e-6}),
+      1.8 * step);
+  EXPECT_LT(
+      LargestJump(probe, d, {100e-6, top + 4e-6, side + 1e-6}, {100e-6, -top - 4e-6, side + 1e-6}),
+      1.8 * step);
+}
+
+// The coupling's energy with the face's field interpolated here, independently of the class: the
+// Hermite cubics of element e on its nodal values (u1, slope1, u2, slope2), the slope being r_z
+// for u_y and -r_y for u_z; linear u_x at the tip.
+struct FaceEnergy {
+  const BeamModel<3>& model;
+  Eigen::Vector3d centre;
+  ProbeFace face;
+
+  double Value(const Eigen::VectorXd& d, int node, NodalDof dof) const {
+    const int r = model.dofs().Reduced(node, dof);
+    return r >= 0 ? d[r] : 0.0;
+  }
+  double Field(const Eigen::VectorXd& d, NodalDof u, NodalDof rotation, double slope_sign) const {
+    const UnitSystem& unit = model.units();
+    const double x = centre.x() / unit.length;
+    int e = 0;
+    while (e + 1 < model.ElementCount() && model.NodeX()[e + 1] <= x) ++e;
+    const double h = model.NodeX()[e + 1] - model.NodeX()[e];
+    const double xi = (x - model.NodeX()[e]) / h;
+    const double u1 = Value(d, e, u), u2 = Value(d, e + 1, u);
+    const double s1 = slope_sign * Value(d, e, rotation);
+    const double s2 = slope_sign * Value(d, e + 1, rotation);
+    const double v = (2 * xi * xi * xi - 3 * xi * xi + 1) * u1 +
+                     h * (xi * xi * xi - 2 * xi * xi + xi) * s1 +
+                     (-2 * xi * xi * xi + 3 * xi * xi) * u2 + h * (xi * xi * xi - xi * xi) * s2;
+    return v * unit.length;
+  }
+  double operator()(const Eigen::VectorXd& d) const {
+    const UnitSystem& unit = model.units();
+    double delta = 0.0;  // m; the sphere is over the faces in these cases
+    switch (face) {
+      case ProbeFace::kUpper:
+        delta =
+            Field(d, NodalDof::kUy, NodalDof::kRz, 1.0) + 0.5 * kThickness - (centre.y() - kRadius);
+        break;
+      case ProbeFace::kLower:
+        delta =
+            centre.y() + kRadius - (Field(d, NodalDof::kUy, NodalDof::kRz, 1.0) - 0.5 * kThickness);
+        break;
+      case ProbeFace::kPositiveZ:
+        delta =
+            Field(d, NodalDof::kUz, NodalDof::kRy, -1.0) + 0.5 * kWidth - (centre.z() - kRadius);
+        break;
+      default:  // the tip's end
+        delta = kL + Value(d, model.ElementCount(), NodalDof::kUx) * unit.length -
+                (centre.x() - kRadius);
+    }
+    const double k = kCoupling / (unit.force / unit.length);
+    const double depth = std::max(0.0, delta / unit.length);
+    return 0.5 * k * depth * depth;
+  }
+};
+
+TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergyOnEveryFace) {
+  const BeamModel<3> model = SpatialCantilever();
+  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  for (int i = 0; i < d.size(); ++i) d[i] = -1e-4 * std::sin(0.3 * i);  // a wavy state
+  const double x = 133e-6, depth = 0.2e-6;
+  const FaceEnergy cases[] = {
+      {model, {x, 0.5 * kThickness + kRadius - depth, 1e-6}, ProbeFace::kUpper},
+      {model, {x, -0.5 * kThickness - kRadius + depth, 1e-6}, ProbeFace::kLower},
+      {model, {x, 0.0, 0.5 * kWidth + kRadius - depth}, ProbeFace::kPositiveZ},
+      {model, {kL + kRadius - depth, 0.0, 0.0}, ProbeFace::kLastEnd},
+  };
+  for (const FaceEnergy& energy : cases) {
+    probe.MoveTo(energy.centre);
+    ASSERT_EQ(probe.Touch(d).face, energy.face);
+    ASSERT_GT(probe.Touch(d).depth_m, 0.0);
+    // Central differences of a quadratic energy are exact up to round-off; h = 1e-6 of the
+    // internal unit balances truncation (zero here) against cancellation (1e-16 / 1e-6).
+    test::ExpectForceAndTangentMatchDifferences(probe, d, model.Stiffness().bandwidth(), energy,
+                                                1e-6, 1e-7);
+  }
 }
 
 TEST(ProbeContactTest, BesideTheBeamOrLostItTouchesNothing) {
   const BeamModel<2> model = test::HapticCantilever();
-  ProbeContact<2> probe(model, ProbeOptions{2e-6, 5.0});
+  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
   const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
   Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
   ForceTangent tangent(static_cast<int>(d.size()), model.Stiffness().bandwidth());
@@ -68,11 +281,13 @@ TEST(ProbeContactTest, BesideTheBeamOrLostItTouchesNothing) {
     probe.MoveTo(p);
     ASSERT_TRUE(probe.Evaluate(d, r, tangent));
     EXPECT_EQ(r.norm(), 0.0);
-    EXPECT_EQ(probe.Reaction(d), 0.0);
+    EXPECT_EQ(probe.Reaction(d).norm(), 0.0);
   }
-  // Just past the tip the sphere's side still touches the tip's edge: sqrt(r^2 - h^2) lower.
+  // Just past the tip and above it, the sphere clears the tip's upper edge by sqrt(r^2 - h^2).
   probe.MoveTo(Eigen::Vector3d(201e-6, 1e-6 + 2e-6 - 0.1e-6, 0.0));
-  EXPECT_NEAR(probe.Penetration(d), 0.1e-6 + std::sqrt(4e-12 - 1e-12) - 2e-6, 1e-15);
+  const ProbeTouch touch = probe.Touch(d);
+  EXPECT_EQ(touch.face, ProbeFace::kUpper);
+  EXPECT_NEAR(touch.depth_m, 0.1e-6 + std::sqrt(4e-12 - 1e-12) - 2e-6, 1e-15);
 }
 
 }  // namespace

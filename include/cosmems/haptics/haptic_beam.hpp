@@ -111,7 +111,7 @@ class HapticBeam {
     const Eigen::VectorXd& d = displacement();
     frame.time_s = time_s();
     frame.probe_m = local_.probe_m;
-    frame.probe_force_n = local_.force_n;
+    frame.probe_force_n = local_.force_n * local_.normal;
     for (int k = 0; k < frame.deflection_m.size(); ++k) {
       const int dof = model_.dofs().Reduced(k, NodalDof::kUy);
       frame.deflection_m[k] = dof >= 0 ? d[dof] * model_.units().length : 0.0;
@@ -129,23 +129,25 @@ class HapticBeam {
     return options;
   }
 
-  // The stiffness the probe meets, d(force)/d(depth): the coupling k_c in series with the beam's
-  // k_b = 1 / (N^T K^-1 N) at the point (the linear beam's; a beam held by the substrate is
-  // stiffer, so the servo loop's extrapolation errs on the soft, passive side).
+  // The stiffness the probe meets along the face's normal, d(force)/d(depth): the coupling k_c
+  // in series with the beam's k_b = 1 / (N^T K^-1 N) at the face's point (the linear beam's; a
+  // beam held by the substrate is stiffer, so the servo loop's extrapolation errs on the soft,
+  // passive side). A face that does not move leaves k_c.
   void UpdateLocalModel(const Eigen::Vector3d& probe_m, double source_time_s) {
     const Eigen::VectorXd& d = displacement();
     const double k_c = probe_.stiffness_n_per_m();
-    probe_.ShapeVector(shape_);
+    const ProbeTouch touch = probe_.Touch(d);
+    probe_.ShapeVector(touch.face, shape_);
     compliance_work_ = shape_;
     compliance_factor_.SolveInPlace(compliance_work_);
     const double compliance =
         shape_.dot(compliance_work_) * model_.units().length / model_.units().force;  // m/N
     local_.probe_m = probe_m;
     local_.source_time_s = source_time_s;
+    local_.normal = touch.normal;
     local_.stiffness_n_per_m = compliance > 0.0 ? k_c / (1.0 + k_c * compliance) : k_c;
-    const double penetration = probe_.Penetration(d);
-    local_.force_n = probe_.Reaction(d);
-    local_.clearance_m = penetration < 0.0 ? -penetration : 0.0;
+    local_.force_n = touch.depth_m > 0.0 ? k_c * touch.depth_m : 0.0;
+    local_.clearance_m = touch.depth_m < 0.0 ? -touch.depth_m : 0.0;
     local_.valid = status_ == Status::kOk && std::isfinite(local_.force_n);
   }
 

@@ -69,7 +69,7 @@ class HapticLoop final : public ServoClient {
     }
     command.valid = model_.valid;
     command.age_s = state.time_s - model_.source_time_s;
-    command.force_n = options_.scaling.HandForce(Eigen::Vector3d(0.0, model_.ForceAt(micro), 0.0));
+    command.force_n = options_.scaling.HandForce(model_.ForceAt(micro));
   }
 
   /// Display side (one thread): takes the newest frame, true when it changed.

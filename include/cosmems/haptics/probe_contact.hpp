@@ -23,16 +23,42 @@ struct ProbeOptions {
   double stiffness = 0.0;  ///< N/m, the coupling spring (required, > 0)
 };
 
-/// The probe pressing on the beam's upper face, as a NonlinearForce. The sphere's centre p is in
-/// the beam's axes [m] (x along the axis from the first support, y away from the substrate, z
-/// across the width). The face point under it is the closest point of the strip 0 <= x <= L,
-/// |z| <= b/2; with h the horizontal distance to it (0 above the strip), the sphere's lowest
-/// point over it is p_y - sqrt(r^2 - h^2) and the penetration is
-///   delta(d) = w(x_c) + t/2 - (p_y - sqrt(r^2 - h^2)),
-/// w(x_c) = N(x_c) . d the Hermite interpolation of u_y. The coupling's energy (k/2) max(delta,0)^2
-/// gives r(d) = k delta N and dr/dd = k N N^T; the beam pushes the probe up with k delta.
-/// The force acts on the axis: an offset across the width would also twist a 3-D beam, which
-/// this neglects. MoveTo() and Evaluate() allocate nothing.
+/// The faces of the beam's box, each pushed along one axis: the upper face (away from the
+/// substrate), the lower face, the sides at +z and -z, and the end faces at x = 0 and x = L.
+enum class ProbeFace { kUpper = 0, kLower, kPositiveZ, kNegativeZ, kFirstEnd, kLastEnd };
+inline constexpr int kProbeFaceCount = 6;
+
+/// Where the probe meets the beam at a state: the face it presses on (or is nearest to), its
+/// outward normal, and the depth along it [m] (negative: the clearance; -inf: out of reach).
+struct ProbeTouch {
+  ProbeFace face = ProbeFace::kUpper;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
+  double depth_m = -std::numeric_limits<double>::infinity();
+};
+
+/// The probe pressing on the beam's faces, as a NonlinearForce. The sphere's centre p is in the
+/// beam's axes [m] (x along the axis from the first support, y away from the substrate, z across
+/// the width); the beam is the box 0 <= x <= L, |z| <= b/2, |y - u_y(x)| <= t/2.
+///
+/// Each face f, moved along its axis a by the beam's displacement u_a at the face point under
+/// the sphere, overlaps the sphere by
+///   delta_f(d) = s_f (c_f + u_a(x_f) - p_a) + sqrt(r^2 - h_f^2),
+/// s_f = +-1 the side of the face, c_f its undeformed place, h_f the distance from p to the face
+/// across the face's plane. The upper and lower faces are the rectangles 0 <= x <= L, |z| <= b/2
+/// (their overlaps are both positive exactly when the sphere meets the box); the sides and ends
+/// are taken unbounded in y (their overlaps only choose the push). A sphere that meets the box
+/// is pushed out through the face it came in by: the face of least overlap when contact begins
+/// (the separating-axis push), held from one accepted step to the next until its overlap ends,
+/// so a hand pressing deeper than the beam's half thickness never pops through to the other face
+/// (Zilles & Salisbury's god object keeps its face the same way). With delta the held face's
+/// overlap, the coupling's energy (k/2) delta^2 gives r(d) = k delta s_f N_f and
+/// dr/dd = k N_f N_f^T, N_f the interpolation of u_a (Hermite cubics for bending, linear for the
+/// axial ends), each delta_f being affine in d.
+///
+/// In a planar model the sides do not move (no u_z): they are a rigid wall to the hand. A push
+/// off the axis does not twist a 3-D beam: the fields are numbered apart, and the coupling of
+/// bending and torsion it needs is neither banded nor the single rank-one tangent part.
+/// MoveTo() and Evaluate() allocate nothing.
 template <int Dim>
 class ProbeContact final : public NonlinearForce {
  public:
@@ -50,8 +76,11 @@ class ProbeContact final : public NonlinearForce {
       element.half_thickness = 0.5 * elements[e].section.thickness / units_.length;
       element.half_width = 0.5 * elements[e].section.width / units_.length;
       for (int node = 0; node < 2; ++node) {
-        element.dof[2 * node] = model.ElementDof(e, Index(node, NodalDof::kUy));
-        element.dof[2 * node + 1] = model.ElementDof(e, Index(node, NodalDof::kRz));
+        element.axial[node] = Dof(model, e, node, NodalDof::kUx);
+        element.bending_y[2 * node] = Dof(model, e, node, NodalDof::kUy);
+        element.bending_y[2 * node + 1] = Dof(model, e, node, NodalDof::kRz);
+        element.bending_z[2 * node] = Dof(model, e, node, NodalDof::kUz);
+        element.bending_z[2 * node + 1] = Dof(model, e, node, NodalDof::kRy);
       }
       elements_.push_back(element);
     }
@@ -64,91 +93,176 @@ class ProbeContact final : public NonlinearForce {
     const double xc = std::clamp(p.x(), 0.0, length_);
     const auto it = std::upper_bound(elements_.begin(), elements_.end(), xc,
                                      [](double x, const Element& e) { return x < e.x0; });
-    element_ = static_cast<int>(std::max<std::ptrdiff_t>(0, it - elements_.begin() - 1));
-    const Element& e = elements_[static_cast<std::size_t>(element_)];
-    xi_ = std::clamp((xc - e.x0) / e.h, 0.0, 1.0);
-    const double zc = std::clamp(p.z(), -e.half_width, e.half_width);
-    const double h2 = (p.x() - xc) * (p.x() - xc) + (p.z() - zc) * (p.z() - zc);
-    // Beyond the strip's edge by more than the radius (or NaN): nothing to touch.
-    reach_ = h2 < radius_ * radius_;
-    const double lowest = p.y() - (reach_ ? std::sqrt(radius_ * radius_ - h2) : 0.0);
-    offset_ = e.half_thickness - lowest;
-    shapes_ = HermiteShapes(xi_);
-    shapes_[1] *= e.h;
-    shapes_[3] *= e.h;
+    const std::size_t index =
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - elements_.begin() - 1));
+    const Element& e = elements_[index];
+    const double xi = std::clamp((xc - e.x0) / e.h, 0.0, 1.0);
+    const double dx = p.x() - xc;
+    const double dz = p.z() - std::clamp(p.z(), -e.half_width, e.half_width);
+    const double r2 = radius_ * radius_;
+    // Beyond the strip by more than the radius (or NaN): nothing to touch.
+    reach_ = dx * dx + dz * dz < r2;
+    if (!reach_) return;
+    const double over_face = std::sqrt(r2 - dx * dx - dz * dz);
+    const double beside = std::sqrt(r2 - dx * dx);
+    const double past_end = std::sqrt(r2 - dz * dz);
+
+    std::array<double, 4> hermite = HermiteShapes(xi);
+    const std::array<double, 4> along_y = {hermite[0], e.h * hermite[1], hermite[2],
+                                           e.h * hermite[3]};
+    // x-z plane: the slope of u_z is -r_y.
+    const std::array<double, 4> along_z = {hermite[0], -e.h * hermite[1], hermite[2],
+                                           -e.h * hermite[3]};
+    Place(ProbeFace::kUpper, +1.0, e.half_thickness - p.y() + over_face, e.bending_y, along_y);
+    Place(ProbeFace::kLower, -1.0, e.half_thickness + p.y() + over_face, e.bending_y, along_y);
+    Place(ProbeFace::kPositiveZ, +1.0, e.half_width - p.z() + beside, e.bending_z, along_z);
+    Place(ProbeFace::kNegativeZ, -1.0, e.half_width + p.z() + beside, e.bending_z, along_z);
+    const Element& first = elements_.front();
+    const Element& last = elements_.back();
+    Place(ProbeFace::kFirstEnd, -1.0, p.x() + past_end, {first.axial[0], -1, -1, -1},
+          {1.0, 0.0, 0.0, 0.0});
+    Place(ProbeFace::kLastEnd, +1.0, length_ - p.x() + past_end, {last.axial[1], -1, -1, -1},
+          {1.0, 0.0, 0.0, 0.0});
   }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     if (!reach_) return true;
-    const double delta = PenetrationInternal(d);
+    const auto [face, delta] = Pushing(d);
     if (!std::isfinite(delta)) return false;
     if (delta <= 0.0) return true;
-    const std::array<int, 4>& dof = elements_[static_cast<std::size_t>(element_)].dof;
+    const Face& f = faces_[static_cast<std::size_t>(face)];
     for (int i = 0; i < 4; ++i) {
-      if (dof[i] < 0) continue;
-      force[dof[i]] += stiffness_ * delta * shapes_[i];
+      if (f.dof[i] < 0) continue;
+      force[f.dof[i]] += stiffness_ * delta * f.sign * f.shape[i];
       for (int j = i; j < 4; ++j) {
-        if (dof[j] >= 0) tangent.band().Add(dof[i], dof[j], stiffness_ * shapes_[i] * shapes_[j]);
+        if (f.dof[j] >= 0)
+          tangent.band().Add(f.dof[i], f.dof[j], stiffness_ * f.shape[i] * f.shape[j]);
       }
     }
     return true;
   }
 
-  /// How deep the sphere sits in the beam at d [m]; negative: the clearance above it (-inf when
-  /// it is beside the beam).
-  double Penetration(const Eigen::VectorXd& d) const {
-    return PenetrationInternal(d) * units_.length;
+  /// The step ending at d is accepted: the face pushing there is held while contact lasts.
+  void Commit(const Eigen::VectorXd& d) override {
+    if (!reach_) {
+      held_ = kNoFace;
+      return;
+    }
+    const auto [face, delta] = Pushing(d);
+    held_ = delta > 0.0 ? static_cast<int>(face) : kNoFace;
   }
-  /// The force the beam pushes the probe up with at d [N] (>= 0).
-  double Reaction(const Eigen::VectorXd& d) const {
-    return stiffness_ * std::max(0.0, PenetrationInternal(d)) * units_.force;
+
+  /// The face the probe presses on (or is nearest to) at d, and how deep.
+  ProbeTouch Touch(const Eigen::VectorXd& d) const {
+    ProbeTouch touch;
+    if (!reach_) return touch;
+    const auto [face, delta] = Pushing(d);
+    touch.face = face;
+    touch.normal = Normal(face);
+    touch.depth_m = delta * units_.length;
+    return touch;
   }
-  /// The beam's deflection u_y under the probe at d [m].
-  double Deflection(const Eigen::VectorXd& d) const { return Interpolate(d) * units_.length; }
-  /// The shape vector N of the point under the probe (reduced dofs, internal units), for the
-  /// beam's compliance there.
-  void ShapeVector(Eigen::VectorXd& n) const {
+  /// The force the beam pushes the probe with at d [N], along the face's outward normal.
+  Eigen::Vector3d Reaction(const Eigen::VectorXd& d) const {
+    const ProbeTouch touch = Touch(d);
+    return touch.depth_m > 0.0 ? Eigen::Vector3d(stiffness_n_per_m() * touch.depth_m * touch.normal)
+                               : Eigen::Vector3d::Zero();
+  }
+  /// The shape vector N_f of the face's point under the probe (reduced dofs, internal units), for
+  /// the beam's compliance there; zero for a face that does not move.
+  void ShapeVector(ProbeFace face, Eigen::VectorXd& n) const {
     n.setZero();
-    const std::array<int, 4>& dof = elements_[static_cast<std::size_t>(element_)].dof;
+    const Face& f = faces_[static_cast<std::size_t>(face)];
     for (int i = 0; i < 4; ++i) {
-      if (dof[i] >= 0) n[dof[i]] = shapes_[i];
+      if (f.dof[i] >= 0) n[f.dof[i]] = f.shape[i];
     }
   }
   double stiffness_n_per_m() const { return stiffness_ * units_.force / units_.length; }
 
+  /// The outward normal of a face in the beam's axes.
+  static Eigen::Vector3d Normal(ProbeFace face) {
+    switch (face) {
+      case ProbeFace::kUpper:
+        return Eigen::Vector3d::UnitY();
+      case ProbeFace::kLower:
+        return -Eigen::Vector3d::UnitY();
+      case ProbeFace::kPositiveZ:
+        return Eigen::Vector3d::UnitZ();
+      case ProbeFace::kNegativeZ:
+        return -Eigen::Vector3d::UnitZ();
+      case ProbeFace::kFirstEnd:
+        return -Eigen::Vector3d::UnitX();
+      case ProbeFace::kLastEnd:
+        break;
+    }
+    return Eigen::Vector3d::UnitX();
+  }
+
  private:
+  using Dofs = std::array<int, 4>;  ///< reduced dofs (-1: supported or absent)
+
   struct Element {
     double x0 = 0.0, h = 0.0, half_thickness = 0.0, half_width = 0.0;
-    std::array<int, 4> dof{};  ///< reduced u_y, theta_z of both nodes (-1: supported)
+    std::array<int, 2> axial{};  ///< u_x of both nodes
+    Dofs bending_y{};            ///< u_y, r_z of both nodes
+    Dofs bending_z{};            ///< u_z, r_y of both nodes
   };
 
-  static int Index(int node, NodalDof dof) {
-    return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
+  // One face at the probe's place: delta = sign * (shape . d[dof]) + constant.
+  struct Face {
+    Dofs dof{-1, -1, -1, -1};
+    std::array<double, 4> shape{};
+    double sign = 1.0, constant = 0.0;
+  };
+
+  static int Dof(const BeamModel<Dim>& model, int element, int node, NodalDof dof) {
+    const int index = FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
+    return index < 0 ? -1 : model.ElementDof(element, node * FrameLayout<Dim>::kNodeDofs + index);
   }
 
-  double Interpolate(const Eigen::VectorXd& d) const {
-    const std::array<int, 4>& dof = elements_[static_cast<std::size_t>(element_)].dof;
-    double w = 0.0;
+  void Place(ProbeFace face, double sign, double constant, const Dofs& dof,
+             const std::array<double, 4>& shape) {
+    faces_[static_cast<std::size_t>(face)] = Face{dof, shape, sign, constant};
+  }
+
+  static double Overlap(const Face& f, const Eigen::VectorXd& d) {
+    double u = 0.0;
     for (int i = 0; i < 4; ++i) {
-      if (dof[i] >= 0) w += shapes_[i] * d[dof[i]];
+      if (f.dof[i] >= 0) u += f.shape[i] * d[f.dof[i]];
     }
-    return w;
+    return f.sign * u + f.constant;
   }
 
-  double PenetrationInternal(const Eigen::VectorXd& d) const {
-    if (!reach_) return -std::numeric_limits<double>::infinity();
-    return Interpolate(d) + offset_;
+  // The face pushing the sphere and its overlap (internal units; the sphere is in reach): the
+  // held face while contact lasts, else the face of least overlap.
+  std::pair<ProbeFace, double> Pushing(const Eigen::VectorXd& d) const {
+    if (held_ == kNoFace) return Deepest(d);
+    return {static_cast<ProbeFace>(held_), Overlap(faces_[static_cast<std::size_t>(held_)], d)};
+  }
+
+  // The face of least overlap and that overlap.
+  std::pair<ProbeFace, double> Deepest(const Eigen::VectorXd& d) const {
+    ProbeFace face = ProbeFace::kUpper;
+    double least = std::numeric_limits<double>::infinity();
+    for (int f = 0; f < kProbeFaceCount; ++f) {
+      const double overlap = Overlap(faces_[static_cast<std::size_t>(f)], d);
+      if (std::isnan(overlap)) return {static_cast<ProbeFace>(f), overlap};  // reported
+      if (overlap < least) {
+        least = overlap;
+        face = static_cast<ProbeFace>(f);
+      }
+    }
+    return {face, least};
   }
 
   UnitSystem units_;
   double radius_, stiffness_;
   double length_ = 0.0;
   std::vector<Element> elements_;
-  int element_ = 0;
-  double xi_ = 0.0;
   bool reach_ = false;
-  double offset_ = 0.0;
-  std::array<double, 4> shapes_{};
+  std::array<Face, kProbeFaceCount> faces_{};
+  static constexpr int kNoFace = -1;
+  int held_ = kNoFace;  ///< the face pushing at the last accepted step
 };
 
 }  // namespace cosmems
