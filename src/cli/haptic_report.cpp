@@ -1,10 +1,12 @@
 #include "haptic_report.hpp"
 
 #include <chrono>
+#include <thread>
 
 #include "cli_input_error.hpp"
 #include "contact_report.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/openhaptics/openhaptics_device.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
@@ -20,17 +22,66 @@ nlohmann::ordered_json TimesJson(const LoopStats& s) {
           {"max", s.ComputeQuantileUs(1.0)}};
 }
 
+// How long an Omni session lasts when the scene does not say [s].
+constexpr double kDefaultSessionS = 30.0;
+
+// The device a scene asks for, open, with the settings derived from its specs.
+struct OpenedDevice {
+  std::unique_ptr<HapticDevice> device;
+  ScriptedDevice* scripted = nullptr;        ///< the same device when scripted
+  OpenHapticsDevice* openhaptics = nullptr;  ///< the same device when an OpenHaptics one
+  HapticSettings settings;
+};
+
+OpenedDevice OpenDevice(const Scene& scene) {
+  const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
+  OpenedDevice out;
+  if (device_scene.backend == DeviceBackend::kScripted) {
+    out.settings = MakeHapticSettings(scene, ScriptedSpecs(scene));
+    ScriptedOptions options;
+    options.clock = device_scene.realtime ? ScriptedClock::kPaced : ScriptedClock::kFast;
+    options.specs = out.settings.specs;
+    auto scripted = std::make_unique<ScriptedDevice>(std::move(out.settings.trajectory), options);
+    out.scripted = scripted.get();
+    out.device = std::move(scripted);
+  } else {
+    OpenHapticsOptions options;
+    options.scheduler_rate_hz = static_cast<int>(scene.analysis.rate);
+    auto openhaptics = std::make_unique<OpenHapticsDevice>(options);
+    out.openhaptics = openhaptics.get();
+    out.device = std::move(openhaptics);
+  }
+  if (const DeviceStatus status = out.device->Open(); status != DeviceStatus::kOk) {
+    std::string reason = ToString(status);
+    if (out.openhaptics) reason += ": " + out.openhaptics->last_error().description;
+    throw std::runtime_error("device.backend: the device did not open (" + reason + ")");
+  }
+  if (out.openhaptics) out.settings = MakeHapticSettings(scene, out.device->specs());
+  return out;
+}
+
+// Runs the servo loop until the scripted stylus ends, or for the scene's duration on a real
+// device (sooner if its scheduler fails).
+void RunSession(const Scene& scene, OpenedDevice& opened) {
+  if (opened.scripted) {
+    opened.scripted->WaitUntilDone();
+    return;
+  }
+  const double seconds = scene.analysis.duration > 0.0 ? scene.analysis.duration : kDefaultSessionS;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end && !opened.openhaptics->servo_ended()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+}
+
 template <int Dim>
 std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
-  if (device_scene.backend != DeviceBackend::kScripted) {
-    throw CliInputError(
-        "device.backend = \"openhaptics\": the command line drives the scripted stylus; an "
-        "Omni is driven by examples/omni_cantilever");
-  }
   RunHeader header = RunHeader::Start(scene);
   const auto start = std::chrono::steady_clock::now();
-  HapticSettings settings = MakeHapticSettings(scene);
+  OpenedDevice opened = OpenDevice(scene);
+  HapticDevice& device = *opened.device;
+  const HapticSettings& settings = opened.settings;
   const BeamModel<Dim> model(MakeBeamDescription(scene));
   SceneForces<Dim> forces(model, scene);
   HapticPhysicsOptions physics;
@@ -38,21 +89,22 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   HapticBeam<Dim> beam(model, settings.probe, forces.All(), forces.contact(), {}, physics);
   HapticLoopOptions loop_options;
   loop_options.scaling = settings.scaling;
-  loop_options.physics = device_scene.realtime ? PhysicsThread::kOwn : PhysicsThread::kServo;
+  // A real device's scheduler paces the servo loop: the physics then always has its own thread.
+  loop_options.physics =
+      device_scene.realtime || opened.openhaptics ? PhysicsThread::kOwn : PhysicsThread::kServo;
   HapticLoop<Dim> loop(beam, loop_options);
-  ScriptedOptions options;
-  options.clock = device_scene.realtime ? ScriptedClock::kPaced : ScriptedClock::kFast;
-  options.specs = settings.specs;
-  ScriptedDevice device(std::move(settings.trajectory), options);
 
   HapticResults r;
-  if (device.Open() != DeviceStatus::kOk) throw std::runtime_error("scripted device: open failed");
+  r.device_model = device.specs().model;
+  r.calibration = device.Calibration();
   loop.StartPhysics();
   if (device.Start(loop) != DeviceStatus::kOk) {
     loop.StopPhysics();
-    throw std::runtime_error("scripted device: start failed");
+    std::string reason = "the servo loop did not start";
+    if (opened.openhaptics) reason += ": " + opened.openhaptics->last_error().description;
+    throw std::runtime_error("device.backend: " + reason);
   }
-  device.WaitUntilDone();
+  RunSession(scene, opened);
   device.Stop();
   loop.StopPhysics();
   header.wall_time_s =
@@ -71,12 +123,29 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   r.coupling_n_per_m = settings.probe.stiffness;
   r.felt_coupling_n_per_m = settings.felt_coupling_n_per_m;
   r.felt_structure_n_per_m = settings.felt_structure_n_per_m;
-  r.realtime_note = device.realtime_note();
-  r.forces = device.Recorded();
+  if (opened.scripted) {
+    r.realtime_note = opened.scripted->realtime_note();
+    r.forces = opened.scripted->Recorded();
+  } else {
+    r.hd_library = OpenHapticsDevice::BuiltWithSdk() ? "sdk" : "fake";
+    if (!OpenHapticsDevice::BuiltWithSdk()) {
+      header.warnings.push_back(
+          "built without the OpenHaptics SDK: the device is the project's fake of the HD API, "
+          "whose stylus stands still");
+    }
+    if (opened.openhaptics->servo_ended()) {
+      header.warnings.push_back("the device's scheduler stopped the servo loop: " +
+                                opened.openhaptics->last_error().description);
+    }
+  }
+  device.Close();
   if (r.failed_physics_ticks > 0) {
     header.warnings.push_back(std::to_string(r.failed_physics_ticks) +
                               " physics ticks failed; the safety layer held the force at zero "
                               "until the next good one");
+  }
+  if (r.calibration != CalibrationStatus::kOk) {
+    header.warnings.push_back(std::string("device calibration: ") + ToString(r.calibration));
   }
   if (device_scene.realtime && !r.servo.realtime && !r.realtime_note.empty()) {
     header.warnings.push_back("not real-time: " + r.realtime_note);
@@ -121,11 +190,18 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
                      {"felt_structure_n_per_m", r.felt_structure_n_per_m}};
   json["contact"] = ContactJson(r.contact);
   json["contact_events"] = ContactEventsJson(r.events);
+  json["device"] = {{"backend", r.hd_library.empty() ? "scripted" : "openhaptics"},
+                    {"model", r.device_model},
+                    {"calibration", ToString(r.calibration)}};
+  if (!r.hd_library.empty()) json["device"]["hd_library"] = r.hd_library;
 }
 
 void HapticReport::PrintResults(std::ostream& out) const {
   const HapticResults& r = results_;
   const LoopStats& s = r.servo;
+  out << "device                " << r.device_model
+      << (r.hd_library.empty() ? " (scripted)" : " (OpenHaptics, " + r.hd_library + " HD library)")
+      << "\n";
   out << "servo ticks           " << s.ticks << " at " << Significant(s.rate_hz, 6) << " Hz ("
       << (s.paced ? "paced" : "as fast as possible") << (s.realtime ? ", real-time" : "") << ")\n";
   out << "tick time             median " << Significant(s.ComputeQuantileUs(0.5), 3) << " us, p99 "
@@ -146,6 +222,7 @@ void HapticReport::PrintResults(std::ostream& out) const {
 }
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {
+  if (!results_.hd_library.empty()) return;  // a real device's ticks are not recorded
   try {
     WriteSamplesCsv((directory / "device_forces.csv").string(), results_.forces);
   } catch (const std::runtime_error& e) {

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "analysis_report.hpp"
+#include "cosmems/haptics/device_types.hpp"
 #include "cosmems/haptics/loop_stats.hpp"
 #include "cosmems/haptics/safety_layer.hpp"
 #include "cosmems/scene/scene.hpp"
@@ -24,14 +25,19 @@ struct HapticResults {
   double position_scale = 0.0, force_scale = 0.0;
   double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
   std::string realtime_note;
-  std::vector<ScriptedSample> forces;  ///< every tick: stylus and the force sent to it
+  std::string device_model;                                ///< from the device's specs
+  CalibrationStatus calibration = CalibrationStatus::kOk;  ///< when the loop started
+  std::string hd_library;  ///< OpenHaptics: "sdk" or "fake"; empty for the scripted stylus
+  std::vector<ScriptedSample> forces;  ///< scripted: every tick, stylus and the force sent to it
 };
 
-/// The scripted stylus touching the beam: a ScriptedDevice replays [device].trajectory at the
-/// analysis rate; a HapticLoop runs the beam (HapticBeam: the scene's effects plus the probe)
-/// and renders the force through the safety layer. realtime = true paces the ticks on the wall
-/// clock with the physics on its own thread; false runs them as fast as possible with the
-/// physics inside each tick, deterministically. device_forces.csv in --out.
+/// A stylus touching the beam: a ScriptedDevice replaying [device].trajectory at the analysis
+/// rate, or an OpenHapticsDevice (a PHANTOM Omni or Touch) for analysis.duration (30 s when not
+/// given); a HapticLoop runs the beam (HapticBeam: the scene's effects plus the probe) and renders
+/// the force through the safety layer. The scripted stylus with realtime = true, and every real
+/// device, pace the ticks on the wall clock with the physics on its own thread; the scripted
+/// stylus with realtime = false runs them as fast as possible with the physics inside each tick,
+/// deterministically, and its ticks go to device_forces.csv in --out.
 class HapticReport final : public AnalysisReport {
  public:
   HapticReport(RunHeader header, HapticResults results)
@@ -41,7 +47,8 @@ class HapticReport final : public AnalysisReport {
 
   const HapticResults& results() const { return results_; }
 
-  /// device_forces.csv: time_s, x_m, y_m, z_m, fx_n, fy_n, fz_n at every tick (device frame).
+  /// device_forces.csv: time_s, x_m, y_m, z_m, fx_n, fy_n, fz_n at every tick (device frame) of
+  /// the scripted stylus.
   void WriteFiles(const std::filesystem::path& directory) const override;
 
  protected:

@@ -30,12 +30,17 @@ bool IsBuiltIn(const std::string& name) {
 
 }  // namespace
 
-HapticSettings MakeHapticSettings(const Scene& scene) {
+DeviceSpecs ScriptedSpecs(const Scene& scene) {
+  DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
+  specs.nominal_rate_hz = scene.analysis.rate;
+  return specs;
+}
+
+HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) {
   const SceneDevice device = scene.device.value_or(SceneDevice{});
   const SceneStructure& s = scene.structure;
   HapticSettings out;
-  out.specs = BuiltInSpecs("PHANTOM Omni");
-  out.specs.nominal_rate_hz = scene.analysis.rate;
+  out.specs = specs;
   const double k_structure = StructureStiffness(scene);
   out.probe.radius = device.probe_radius.value_or(s.thickness);
   // 25 times the structure: the probe sinks 4 % of a press into the coupling, and the coupling,
@@ -72,6 +77,7 @@ HapticSettings MakeHapticSettings(const Scene& scene) {
     shape.cycles = std::max(1, static_cast<int>(std::lround(duration / shape.period_s)));
     shape.period_s = duration / shape.cycles;
   }
+  if (device.backend != DeviceBackend::kScripted) return out;
   try {
     out.trajectory = IsBuiltIn(device.trajectory) ? MakeBuiltInTrajectory(device.trajectory, shape)
                                                   : LoadCsvTrajectory(device.trajectory);

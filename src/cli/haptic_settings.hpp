@@ -15,16 +15,21 @@ namespace cosmems::internal {
 struct HapticSettings {
   HandScaling scaling;
   ProbeOptions probe;
-  std::unique_ptr<Trajectory> trajectory;
-  DeviceSpecs specs;              ///< the scripted device's (a PHANTOM Omni at the scene's rate)
-  double felt_coupling_n_per_m;   ///< the coupling as the hand feels it
-  double felt_structure_n_per_m;  ///< the free structure at the probe as the hand feels it
+  std::unique_ptr<Trajectory> trajectory;  ///< the scripted stylus's (null for a real device)
+  DeviceSpecs specs;                       ///< the device's
+  double felt_coupling_n_per_m;            ///< the coupling as the hand feels it
+  double felt_structure_n_per_m;           ///< the free structure at the probe as the hand feels it
 };
 
-/// Derives the settings. The probe starts one gap (or one thickness without a substrate) above
-/// the beam's upper face over the cantilever's tip or the bridge's midspan; the built-in motions
-/// press 2.2 of those distances down (through the clearance, the gap, then a little into the
-/// contact). Throws CliInputError naming a [device] key whose value the device cannot render.
-HapticSettings MakeHapticSettings(const Scene& scene);
+/// The scripted stylus's device: a PHANTOM Omni at the scene's rate.
+DeviceSpecs ScriptedSpecs(const Scene& scene);
+
+/// Derives the settings for a device with `specs`. The probe starts one gap (or one thickness
+/// without a substrate) above the beam's upper face over the cantilever's tip or the bridge's
+/// midspan, where the device's frame has the point half a press above its origin; the built-in
+/// motions press 2.2 of those distances down (through the clearance, the gap, then a little into
+/// the contact). The trajectory is made for the scripted backend only. Throws CliInputError
+/// naming a [device] key whose value the device cannot render.
+HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs);
 
 }  // namespace cosmems::internal

@@ -192,6 +192,14 @@ OpenHapticsError OpenHapticsDevice::last_error() const {
   return e;
 }
 
+bool OpenHapticsDevice::BuiltWithSdk() {
+#ifdef COSMEMS_OPENHAPTICS_WITH_SDK
+  return true;
+#else
+  return false;
+#endif
+}
+
 bool OpenHapticsDevice::servo_ended() const { return session_->ended.load(); }
 
 DeviceStatus OpenHapticsDevice::OpenBackend(DeviceSpecs& specs) {

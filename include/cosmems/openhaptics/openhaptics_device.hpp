@@ -47,6 +47,9 @@ class OpenHapticsDevice final : public HapticDevice {
   OpenHapticsError last_error() const;
   /// True when the servo loop ended on its own (a scheduler error) since the last Start().
   bool servo_ended() const;
+  /// True when this library was built against the OpenHaptics SDK, false when against the
+  /// project's fake of the HD API.
+  static bool BuiltWithSdk();
 
  protected:
   DeviceStatus OpenBackend(DeviceSpecs& specs) override;

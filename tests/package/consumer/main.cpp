@@ -1,7 +1,9 @@
 // A program outside the cosmems tree: the reference cantilever's tip deflection through the
-// installed headers, with its sparse (CHOLMOD) path so the private link dependency is tested.
+// installed headers, with its sparse (CHOLMOD) path so the private link dependency is tested, and
+// the OpenHaptics backend opened (the fake HD library's device when built without the SDK).
 #include <cmath>
 #include <cosmems/cosmems.hpp>
+#include <cosmems/openhaptics/openhaptics_device.hpp>
 #include <cstdio>
 
 int main() {
@@ -18,5 +20,12 @@ int main() {
   const double expected =
       force * length * length * length / (3 * silicon.young_modulus * section.SecondMomentZ());
   std::printf("tip deflection %.6e m (closed form %.6e m)\n", tip, expected);
+  cosmems::OpenHapticsDevice device;
+  const cosmems::DeviceStatus status = device.Open();
+  std::printf("OpenHaptics (%s): %s, %s\n",
+              cosmems::OpenHapticsDevice::BuiltWithSdk() ? "SDK" : "fake",
+              cosmems::ToString(status), device.specs().model.c_str());
+  if (!cosmems::OpenHapticsDevice::BuiltWithSdk() && status != cosmems::DeviceStatus::kOk) return 1;
+  device.Close();
   return std::abs(tip - expected) <= 1e-10 * std::abs(expected) ? 0 : 1;
 }
