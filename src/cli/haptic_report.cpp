@@ -82,7 +82,9 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   OpenedDevice opened = OpenDevice(scene);
   HapticDevice& device = *opened.device;
   const HapticSettings& settings = opened.settings;
-  const BeamModel<Dim> model(MakeBeamDescription(scene));
+  // Numbered node by node in 3-D, so that a press off the axis twists the beam (ProbeContact).
+  const BeamModel<Dim> model(MakeBeamDescription(scene),
+                             Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField);
   SceneForces<Dim> forces(model, scene);
   HapticPhysicsOptions physics;
   physics.tick_s = 1.0 / scene.analysis.rate;

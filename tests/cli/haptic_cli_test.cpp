@@ -48,6 +48,16 @@ TEST(HapticCliTest, TheScriptedPressTouchesTheSubstrateWithinTheDeviceLimits) {
   EXPECT_EQ(ReadLines(again.path() / "device_forces.csv"), lines);
 }
 
+// In 3-D (numbered node by node, so that the probe may twist the beam) the press runs the same.
+TEST(HapticCliTest, TheSpatialBeamIsPressedOntoTheSubstrateToo) {
+  const nlohmann::json json = RunJson(Args({"cantilever-haptic", "--set", "model.dimension=3"}));
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_EQ(json.at("physics").at("failed_ticks").get<long>(), 0);
+  EXPECT_GE(json.at("contact_events").at("stuck_events").get<long>(), 1);
+  EXPECT_LE(json.at("max_device_force_n").get<double>(),
+            json.at("force_limit_n").get<double>() * (1 + 1e-12));
+}
+
 // The OpenHaptics backend from the command line: without the SDK, the project's fake Omni, whose
 // stylus rests at the workspace's centre, a tenth of the clearance into the beam's upper face.
 TEST(HapticCliTest, TheOpenHapticsBackendRunsTheSceneForItsDuration) {

@@ -92,6 +92,27 @@ TEST(HapticBeamTest, AHardPressHoldsTheBeamOnTheSubstrate) {
   EXPECT_TRUE(frame.contact.Stuck());
 }
 
+// Pressed on the tip's upper face z0 off the axis, a 3-D beam numbered node by node bends and
+// twists: the point under the probe sinks F (L^3 / 3EI + z0^2 L / GJ), in series with the
+// coupling.
+TEST(HapticBeamTest, APressOffTheAxisTwistsTheBeam) {
+  const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                         test::Silicon(), test::ReferenceSection(), 20, 0),
+                           DofNumbering::kByNode);
+  const double k_c = 5.0, depth = 0.5e-6, z0 = 8e-6;
+  HapticBeam<3> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  const Eigen::Vector3d centre = OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z0);
+  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(centre, 0.0), Status::kOk);
+  const Material silicon = test::Silicon();
+  const double shear = silicon.young_modulus / (2.0 * (1.0 + silicon.poisson_ratio));
+  const double torsion =
+      shear * test::ReferenceSection().TorsionConstant() / test::kReferenceLength;
+  const double compliance = 1.0 / test::ReferenceTipStiffness() + z0 * z0 / torsion + 1.0 / k_c;
+  // Hermite bending and linear torsion are exact for end loads; 1e-9: round-off, as above.
+  EXPECT_NEAR(beam.local_model().force_n, depth / compliance, 1e-9 * depth / compliance);
+  EXPECT_NEAR(beam.local_model().stiffness_n_per_m, 1.0 / compliance, 1e-9 / compliance);
+}
+
 // Pressed onto the substrate at the tip, then swept toward the clamp, the stylus lays the beam
 // down; lifted, it leaves it stuck in the S shape whose free span s balances the adhesion,
 // Gamma = 3 E t^3 g^2 / (2 s^4): s = 142 um here.

@@ -19,9 +19,10 @@ namespace {
 constexpr double kThickness = 2e-6, kWidth = 20e-6, kRadius = 2e-6, kCoupling = 5.0;
 constexpr double kL = test::kReferenceLength;
 
-BeamModel<3> SpatialCantilever() {
+BeamModel<3> SpatialCantilever(DofNumbering numbering = DofNumbering::kByField) {
   return BeamModel<3>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                    test::ReferenceSection(), 20, 0));
+                                    test::ReferenceSection(), 20, 0),
+                      numbering);
 }
 
 // u(x) = a x^2 + c x^3 [m], with a clamped root; Hermite cubics hold it exactly.
@@ -193,11 +194,13 @@ TEST(ProbeContactTest, TheForceIsContinuousAroundTheEdges) {
 
 // The coupling's energy with the face's field interpolated here, independently of the class: the
 // Hermite cubics of element e on its nodal values (u1, slope1, u2, slope2), the slope being r_z
-// for u_y and -r_y for u_z; linear u_x at the tip.
+// for u_y and -r_y for u_z; linear u_x at the tip; with `twisting`, the upper and lower faces'
+// point at z_c lowered by r_x z_c, r_x linear along the element.
 struct FaceEnergy {
   const BeamModel<3>& model;
   Eigen::Vector3d centre;
   ProbeFace face;
+  bool twisting = false;
 
   double Value(const Eigen::VectorXd& d, int node, NodalDof dof) const {
     const int r = model.dofs().Reduced(node, dof);
@@ -218,17 +221,27 @@ struct FaceEnergy {
                      (-2 * xi * xi * xi + 3 * xi * xi) * u2 + h * (xi * xi * xi - xi * xi) * s2;
     return v * unit.length;
   }
+  // u_y at the face's point under the centre [m].
+  double FaceY(const Eigen::VectorXd& d) const {
+    const double w = Field(d, NodalDof::kUy, NodalDof::kRz, 1.0);
+    if (!twisting) return w;
+    const double x = centre.x() / model.units().length;
+    int e = 0;
+    while (e + 1 < model.ElementCount() && model.NodeX()[e + 1] <= x) ++e;
+    const double xi = (x - model.NodeX()[e]) / (model.NodeX()[e + 1] - model.NodeX()[e]);
+    const double twist =
+        (1 - xi) * Value(d, e, NodalDof::kRx) + xi * Value(d, e + 1, NodalDof::kRx);
+    return w - twist * std::clamp(centre.z(), -0.5 * kWidth, 0.5 * kWidth);
+  }
   double operator()(const Eigen::VectorXd& d) const {
     const UnitSystem& unit = model.units();
     double delta = 0.0;  // m; the sphere is over the faces in these cases
     switch (face) {
       case ProbeFace::kUpper:
-        delta =
-            Field(d, NodalDof::kUy, NodalDof::kRz, 1.0) + 0.5 * kThickness - (centre.y() - kRadius);
+        delta = FaceY(d) + 0.5 * kThickness - (centre.y() - kRadius);
         break;
       case ProbeFace::kLower:
-        delta =
-            centre.y() + kRadius - (Field(d, NodalDof::kUy, NodalDof::kRz, 1.0) - 0.5 * kThickness);
+        delta = centre.y() + kRadius - (FaceY(d) - 0.5 * kThickness);
         break;
       case ProbeFace::kPositiveZ:
         delta =
@@ -264,6 +277,20 @@ TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergyOnEveryFace) {
     // internal unit balances truncation (zero here) against cancellation (1e-16 / 1e-6).
     test::ExpectForceAndTangentMatchDifferences(probe, d, model.Stiffness().bandwidth(), energy,
                                                 1e-6, 1e-7);
+  }
+  // Numbered node by node, a press off the axis twists the beam.
+  const BeamModel<3> by_node = SpatialCantilever(DofNumbering::kByNode);
+  ProbeContact<3> twisting(by_node, ProbeOptions{kRadius, kCoupling});
+  d.setZero(by_node.FreeDofCount());
+  for (int i = 0; i < d.size(); ++i) d[i] = -1e-4 * std::sin(0.3 * i);
+  for (const FaceEnergy& energy :
+       {FaceEnergy{by_node, {x, 0.5 * kThickness + kRadius - depth, 7e-6}, ProbeFace::kUpper, true},
+        FaceEnergy{
+            by_node, {x, -0.5 * kThickness - kRadius + depth, -6e-6}, ProbeFace::kLower, true}}) {
+    twisting.MoveTo(energy.centre);
+    ASSERT_EQ(twisting.Touch(d).face, energy.face);
+    test::ExpectForceAndTangentMatchDifferences(twisting, d, by_node.Stiffness().bandwidth(),
+                                                energy, 1e-6, 1e-7);
   }
 }
 

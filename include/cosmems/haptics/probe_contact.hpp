@@ -55,9 +55,11 @@ struct ProbeTouch {
 /// dr/dd = k N_f N_f^T, N_f the interpolation of u_a (Hermite cubics for bending, linear for the
 /// axial ends), each delta_f being affine in d.
 ///
-/// In a planar model the sides do not move (no u_z): they are a rigid wall to the hand. A push
-/// off the axis does not twist a 3-D beam: the fields are numbered apart, and the coupling of
-/// bending and torsion it needs is neither banded nor the single rank-one tangent part.
+/// In a 3-D model numbered node by node (DofNumbering::kByNode) the upper and lower faces also
+/// turn with the twist r_x: their point at z_c across the width moves by u_y - r_x z_c, so a push
+/// off the axis twists the beam. Numbered field by field, bending and torsion lie outside each
+/// other's band and the twist is left out. The sides move with u_z (their small arm about the
+/// axis, at most t/2, is left out); in a planar model they do not move: a rigid wall to the hand.
 /// MoveTo() and Evaluate() allocate nothing.
 template <int Dim>
 class ProbeContact final : public NonlinearForce {
@@ -69,6 +71,7 @@ class ProbeContact final : public NonlinearForce {
     RequirePositive("probe.radius", options.radius);
     RequirePositive("probe.stiffness", options.stiffness);
     const auto& elements = model.description().elements;
+    const bool twisting = model.dofs().numbering() == DofNumbering::kByNode;
     for (int e = 0; e < model.ElementCount(); ++e) {
       Element element;
       element.x0 = model.NodeX()[e];
@@ -81,6 +84,7 @@ class ProbeContact final : public NonlinearForce {
         element.bending_y[2 * node + 1] = Dof(model, e, node, NodalDof::kRz);
         element.bending_z[2 * node] = Dof(model, e, node, NodalDof::kUz);
         element.bending_z[2 * node + 1] = Dof(model, e, node, NodalDof::kRy);
+        element.twist[node] = twisting ? Dof(model, e, node, NodalDof::kRx) : -1;
       }
       elements_.push_back(element);
     }
@@ -98,7 +102,8 @@ class ProbeContact final : public NonlinearForce {
     const Element& e = elements_[index];
     const double xi = std::clamp((xc - e.x0) / e.h, 0.0, 1.0);
     const double dx = p.x() - xc;
-    const double dz = p.z() - std::clamp(p.z(), -e.half_width, e.half_width);
+    const double zc = std::clamp(p.z(), -e.half_width, e.half_width);
+    const double dz = p.z() - zc;
     const double r2 = radius_ * radius_;
     // Beyond the strip by more than the radius (or NaN): nothing to touch.
     reach_ = dx * dx + dz * dz < r2;
@@ -107,22 +112,24 @@ class ProbeContact final : public NonlinearForce {
     const double beside = std::sqrt(r2 - dx * dx);
     const double past_end = std::sqrt(r2 - dz * dz);
 
-    std::array<double, 4> hermite = HermiteShapes(xi);
-    const std::array<double, 4> along_y = {hermite[0], e.h * hermite[1], hermite[2],
-                                           e.h * hermite[3]};
+    const std::array<double, 4> hermite = HermiteShapes(xi);
+    // u_y - r_x z_c at the face's point, r_x linear along the element.
+    const Dofs across_y = {e.bending_y[0], e.bending_y[1], e.bending_y[2],
+                           e.bending_y[3], e.twist[0],     e.twist[1]};
+    const Shapes along_y = {hermite[0],       e.h * hermite[1], hermite[2],
+                            e.h * hermite[3], -zc * (1.0 - xi), -zc * xi};
     // x-z plane: the slope of u_z is -r_y.
-    const std::array<double, 4> along_z = {hermite[0], -e.h * hermite[1], hermite[2],
-                                           -e.h * hermite[3]};
-    Place(ProbeFace::kUpper, +1.0, e.half_thickness - p.y() + over_face, e.bending_y, along_y);
-    Place(ProbeFace::kLower, -1.0, e.half_thickness + p.y() + over_face, e.bending_y, along_y);
-    Place(ProbeFace::kPositiveZ, +1.0, e.half_width - p.z() + beside, e.bending_z, along_z);
-    Place(ProbeFace::kNegativeZ, -1.0, e.half_width + p.z() + beside, e.bending_z, along_z);
-    const Element& first = elements_.front();
-    const Element& last = elements_.back();
-    Place(ProbeFace::kFirstEnd, -1.0, p.x() + past_end, {first.axial[0], -1, -1, -1},
-          {1.0, 0.0, 0.0, 0.0});
-    Place(ProbeFace::kLastEnd, +1.0, length_ - p.x() + past_end, {last.axial[1], -1, -1, -1},
-          {1.0, 0.0, 0.0, 0.0});
+    const Dofs across_z = {e.bending_z[0], e.bending_z[1], e.bending_z[2], e.bending_z[3], -1, -1};
+    const Shapes along_z = {hermite[0], -e.h * hermite[1], hermite[2], -e.h * hermite[3], 0.0, 0.0};
+    Place(ProbeFace::kUpper, +1.0, e.half_thickness - p.y() + over_face, across_y, along_y);
+    Place(ProbeFace::kLower, -1.0, e.half_thickness + p.y() + over_face, across_y, along_y);
+    Place(ProbeFace::kPositiveZ, +1.0, e.half_width - p.z() + beside, across_z, along_z);
+    Place(ProbeFace::kNegativeZ, -1.0, e.half_width + p.z() + beside, across_z, along_z);
+    const Shapes end_shape = {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    Place(ProbeFace::kFirstEnd, -1.0, p.x() + past_end,
+          {elements_.front().axial[0], -1, -1, -1, -1, -1}, end_shape);
+    Place(ProbeFace::kLastEnd, +1.0, length_ - p.x() + past_end,
+          {elements_.back().axial[1], -1, -1, -1, -1, -1}, end_shape);
   }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
@@ -131,10 +138,10 @@ class ProbeContact final : public NonlinearForce {
     if (!std::isfinite(delta)) return false;
     if (delta <= 0.0) return true;
     const Face& f = faces_[static_cast<std::size_t>(face)];
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kFaceDofs; ++i) {
       if (f.dof[i] < 0) continue;
       force[f.dof[i]] += stiffness_ * delta * f.sign * f.shape[i];
-      for (int j = i; j < 4; ++j) {
+      for (int j = i; j < kFaceDofs; ++j) {
         if (f.dof[j] >= 0)
           tangent.band().Add(f.dof[i], f.dof[j], stiffness_ * f.shape[i] * f.shape[j]);
       }
@@ -173,7 +180,7 @@ class ProbeContact final : public NonlinearForce {
   void ShapeVector(ProbeFace face, Eigen::VectorXd& n) const {
     n.setZero();
     const Face& f = faces_[static_cast<std::size_t>(face)];
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kFaceDofs; ++i) {
       if (f.dof[i] >= 0) n[f.dof[i]] = f.shape[i];
     }
   }
@@ -199,19 +206,23 @@ class ProbeContact final : public NonlinearForce {
   }
 
  private:
-  using Dofs = std::array<int, 4>;  ///< reduced dofs (-1: supported or absent)
+  // A face's point moves with at most six dofs: u_y, r_z of both nodes and their twists.
+  static constexpr int kFaceDofs = 6;
+  using Dofs = std::array<int, kFaceDofs>;  ///< reduced dofs (-1: supported or absent)
+  using Shapes = std::array<double, kFaceDofs>;
 
   struct Element {
     double x0 = 0.0, h = 0.0, half_thickness = 0.0, half_width = 0.0;
-    std::array<int, 2> axial{};  ///< u_x of both nodes
-    Dofs bending_y{};            ///< u_y, r_z of both nodes
-    Dofs bending_z{};            ///< u_z, r_y of both nodes
+    std::array<int, 2> axial{};      ///< u_x of both nodes
+    std::array<int, 4> bending_y{};  ///< u_y, r_z of both nodes
+    std::array<int, 4> bending_z{};  ///< u_z, r_y of both nodes
+    std::array<int, 2> twist{};      ///< r_x of both nodes (-1 when left out)
   };
 
   // One face at the probe's place: delta = sign * (shape . d[dof]) + constant.
   struct Face {
-    Dofs dof{-1, -1, -1, -1};
-    std::array<double, 4> shape{};
+    Dofs dof{-1, -1, -1, -1, -1, -1};
+    Shapes shape{};
     double sign = 1.0, constant = 0.0;
   };
 
@@ -220,14 +231,13 @@ class ProbeContact final : public NonlinearForce {
     return index < 0 ? -1 : model.ElementDof(element, node * FrameLayout<Dim>::kNodeDofs + index);
   }
 
-  void Place(ProbeFace face, double sign, double constant, const Dofs& dof,
-             const std::array<double, 4>& shape) {
+  void Place(ProbeFace face, double sign, double constant, const Dofs& dof, const Shapes& shape) {
     faces_[static_cast<std::size_t>(face)] = Face{dof, shape, sign, constant};
   }
 
   static double Overlap(const Face& f, const Eigen::VectorXd& d) {
     double u = 0.0;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < kFaceDofs; ++i) {
       if (f.dof[i] >= 0) u += f.shape[i] * d[f.dof[i]];
     }
     return f.sign * u + f.constant;
