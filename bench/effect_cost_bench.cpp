@@ -80,6 +80,7 @@ BENCHMARK_CAPTURE(BM_EffectStep, stiction, {"effects.stiction.adhesion_energy=0.
 BENCHMARK_CAPTURE(BM_EffectStep, electrostatic_10V, {"effects.electrostatic.voltage=10.0"});
 BENCHMARK_CAPTURE(BM_EffectStep, casimir, {"effects.casimir.enabled=true"});
 BENCHMARK_CAPTURE(BM_EffectStep, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"});
+BENCHMARK_CAPTURE(BM_EffectStep, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"});
 BENCHMARK_CAPTURE(BM_EffectStep, contact_stiction_casimir,
                   {"effects.stiction.adhesion_energy=0.02", "effects.casimir.enabled=true",
                    kPressed});

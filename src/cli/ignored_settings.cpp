@@ -20,6 +20,10 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
                             ? "its frequencies and modes are those of the undamped beam"
                             : "damping acts in transient analyses only"));
   }
+  if (IsOn(scene.effects.squeeze_film)) {
+    warnings.push_back("effects.squeeze_film" + unchanged +
+                       "the gas film resists motion, in transient and haptic analyses only");
+  }
   if (scene.model.modes > 0) {
     warnings.push_back("model.modes = " + std::to_string(scene.model.modes) + unchanged +
                        "modal reduction applies to transient analyses only (analysis.integrator "

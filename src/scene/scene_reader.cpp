@@ -222,18 +222,30 @@ std::optional<DampingEffect> ReadDamping(const TomlFieldReader& r) {
   return d;
 }
 
+std::optional<SqueezeFilmEffect> ReadSqueezeFilm(const TomlFieldReader& r) {
+  SqueezeFilmEffect s;
+  if (!HasEffect(r, "squeeze_film", {"enabled", "viscosity", "mean_free_path"}, s.enabled)) {
+    return std::nullopt;
+  }
+  s.viscosity = r.OptionalPositive("effects.squeeze_film.viscosity");
+  s.mean_free_path = r.OptionalNonNegative("effects.squeeze_film.mean_free_path");
+  return s;
+}
+
 SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structure) {
   SceneEffects e;
   if (!r.HasTable("effects")) return e;
-  r.RejectUnknownKeys(
-      "effects", {"contact", "stiction", "electrostatic", "casimir", "van_der_waals", "damping"},
-      "effect");
+  r.RejectUnknownKeys("effects",
+                      {"contact", "stiction", "electrostatic", "casimir", "van_der_waals",
+                       "damping", "squeeze_film"},
+                      "effect");
   e.contact = ReadContact(r);
   e.stiction = ReadStiction(r);
   e.electrostatic = ReadElectrostatic(r, structure);
   e.casimir = ReadCasimir(r);
   e.van_der_waals = ReadVanDerWaals(r);
   e.damping = ReadDamping(r);
+  e.squeeze_film = ReadSqueezeFilm(r);
   return e;
 }
 
@@ -396,9 +408,10 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
 }
 
 // The effects that act through the substrate, and what each analysis does with them: a pull-in
-// needs the electrode; contact and stiction act in static, transient and release analyses; every
-// surface effect needs the gap and its parameters, and the beam theories with a Newton path that
-// carries them (not the Cosserat rod, nor modal or explicit stepping).
+// needs the electrode; contact and stiction act in static, transient and release analyses, the
+// gas film wherever the beam moves; every surface effect needs the gap and its parameters, and
+// the beam theories with a Newton path that carries them (not the Cosserat rod, nor modal or
+// explicit stepping).
 void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   const SceneEffects& e = scene.effects;
   const bool contact = e.HasContact();
@@ -417,13 +430,14 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
               "analysis.type = \"release\" lets the beam go from the substrate: declare "
               "[effects.stiction] (or [effects.contact])");
   }
-  if (!contact && !e.HasSurfacePressure()) return;
+  if (!e.HasSurfaceEffect()) return;
   // The declared effect the messages below name.
   const char* first = IsOn(e.contact)         ? "effects.contact"
                       : IsOn(e.stiction)      ? "effects.stiction"
                       : IsOn(e.electrostatic) ? "effects.electrostatic"
                       : IsOn(e.casimir)       ? "effects.casimir"
-                                              : "effects.van_der_waals";
+                      : IsOn(e.van_der_waals) ? "effects.van_der_waals"
+                                              : "effects.squeeze_film";
   r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling, first,
             std::string("not available for analysis.type = \"") + ToString(type) +
                 "\", which linearises about the straight beam (remove the table or set enabled = "

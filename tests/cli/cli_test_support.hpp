@@ -17,9 +17,10 @@ namespace cosmems::testing {
 // A fresh directory per test under GoogleTest's temporary directory, removed afterwards.
 class TempDirectory {
  public:
-  TempDirectory() {
+  /// A directory named after the running test; `suffix` tells apart several in one test.
+  explicit TempDirectory(const std::string& suffix = "") {
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(test->test_suite_name()) + "_" + test->name();
+    std::string name = std::string(test->test_suite_name()) + "_" + test->name() + suffix;
     std::replace(name.begin(), name.end(), '/', '_');
     path_ = std::filesystem::path(::testing::TempDir()) / ("cosmems_" + name);
     std::filesystem::remove_all(path_);

@@ -43,7 +43,7 @@ TEST(HapticCliTest, TheScriptedPressTouchesTheSubstrateWithinTheDeviceLimits) {
   ASSERT_EQ(lines.size(), 2002u);  // the header and a row a tick
   EXPECT_EQ(lines[0], "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n");
   // The same run again gives the same forces, tick for tick.
-  const TempDirectory again;
+  const TempDirectory again("_again");
   RunJson(Args({"cantilever-haptic", "--out", again.path().string()}));
   EXPECT_EQ(ReadLines(again.path() / "device_forces.csv"), lines);
 }

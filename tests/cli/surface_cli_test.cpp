@@ -102,6 +102,31 @@ TEST(SurfaceCliTest, TouchdownTransientSticksAndIsPulledFree) {
   }
 }
 
+// The first time the tip comes within 5 % of the gap of the substrate [s] in history.csv.
+double FirstNearContact(const std::vector<std::string>& lines) {
+  for (const std::string& line : lines) {
+    if (line.rfind("time_s", 0) == 0) continue;
+    if (std::stod(line.substr(line.find(',') + 1)) < -0.95 * 2e-6) return std::stod(line);
+  }
+  return -1.0;
+}
+
+// The air under the beam cushions its fall: the film's force grows like 1/d^3 as the gap d
+// closes, so the tip reaches the substrate later, and still sticks.
+TEST(SurfaceCliTest, TheSqueezeFilmCushionsTheTouchdown) {
+  const TempDirectory bare("_bare"), cushioned("_cushioned");
+  RunJson({"cantilever-touchdown", "--out", bare.path().string()});
+  const nlohmann::json json =
+      RunJson({"cantilever-touchdown", "--set", "effects.squeeze_film.viscosity=1.81e-5", "--out",
+               cushioned.path().string()});
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_GE(json.at("contact_events").at("stuck_events").get<int>(), 1);
+  const double without = FirstNearContact(ReadLines(bare.path() / "history.csv"));
+  const double with = FirstNearContact(ReadLines(cushioned.path() / "history.csv"));
+  ASSERT_GT(without, 0.0);
+  EXPECT_GT(with, without);
+}
+
 TEST(SurfaceCliTest, EffectKeysAreValidated) {
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "effects.stiction={}"}),
                  "effects.stiction.adhesion_energy");

@@ -57,6 +57,12 @@ inline void ExpectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.effects.damping->quality_factor, b.effects.damping->quality_factor);
     EXPECT_EQ(a.effects.damping->rayleigh, b.effects.damping->rayleigh);
   }
+  ASSERT_EQ(a.effects.squeeze_film.has_value(), b.effects.squeeze_film.has_value());
+  if (a.effects.squeeze_film) {
+    EXPECT_EQ(a.effects.squeeze_film->enabled, b.effects.squeeze_film->enabled);
+    EXPECT_EQ(a.effects.squeeze_film->viscosity, b.effects.squeeze_film->viscosity);
+    EXPECT_EQ(a.effects.squeeze_film->mean_free_path, b.effects.squeeze_film->mean_free_path);
+  }
   EXPECT_EQ(a.analysis.type, b.analysis.type);
   EXPECT_EQ(a.analysis.count, b.analysis.count);
   EXPECT_EQ(a.analysis.duration, b.analysis.duration);

@@ -121,6 +121,7 @@ casimir = { enabled = false }
 stiction = { enabled = false, adhesion_energy = 0.02 }
 van_der_waals = { enabled = false, hamaker = 1e-19 }
 damping = { enabled = false, rayleigh = [10.0, 1e-9] }
+squeeze_film = { enabled = false, viscosity = 1.9e-5, mean_free_path = 6.8e-8 }
 [effects.electrostatic]
 enabled = false
 voltage = 12.5
@@ -131,9 +132,12 @@ electrode_end = 5e-5
                                     "effects.toml");
   const SceneEffects& e = scene.effects;
   ASSERT_TRUE(e.contact && e.casimir && e.stiction && e.electrostatic && e.van_der_waals &&
-              e.damping);
+              e.damping && e.squeeze_film);
   EXPECT_FALSE(e.contact->enabled || e.casimir->enabled || e.stiction->enabled ||
-               e.electrostatic->enabled || e.van_der_waals->enabled || e.damping->enabled);
+               e.electrostatic->enabled || e.van_der_waals->enabled || e.damping->enabled ||
+               e.squeeze_film->enabled);
+  EXPECT_EQ(e.squeeze_film->viscosity, 1.9e-5);
+  EXPECT_EQ(e.squeeze_film->mean_free_path, 6.8e-8);
   EXPECT_EQ(e.stiction->adhesion_energy, 0.02);
   EXPECT_EQ(e.electrostatic->voltage, 12.5);
   EXPECT_TRUE(e.electrostatic->fringing);

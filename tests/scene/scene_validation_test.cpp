@@ -263,7 +263,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown device backend (expected \"scripted\" or \"openhaptics\")"},
         BadScene{"effect", With("effects.magnetic", "{}"), "effects.magnetic = {}",
                  "unknown effect (expected contact, stiction, electrostatic, casimir, "
-                 "van_der_waals or damping)"},
+                 "van_der_waals, damping or squeeze_film)"},
         BadScene{"table", With("substrate.gap", "1e-6"), "substrate = { gap = 1e-06 }",
                  "unknown table (expected structure, material,"},
         BadScene{"root_key", With("title", "\"my beam\""), "title = \"my beam\"", "unknown table"},
@@ -312,7 +312,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"separation_too_large", With("effects.contact.separation", "1.5e-6"),
                  "effects.contact.separation = 1.5e-06", "less than half the gap"},
         BadScene{"negative_tolerance", With("effects.contact.tolerance", "-1e-9"),
-                 "effects.contact.tolerance = -1e-09", "must be positive"}),
+                 "effects.contact.tolerance = -1e-09", "must be positive"},
+        BadScene{"squeeze_film_without_gap",
+                 With("effects.squeeze_film", "{}").Remove("structure.gap"), "structure.gap",
+                 "effects.squeeze_film acts through the substrate"},
+        BadScene{"squeeze_film_viscosity", With("effects.squeeze_film.viscosity", "0.0"),
+                 "effects.squeeze_film.viscosity = 0.0", "must be positive"},
+        BadScene{"squeeze_film_mean_free_path",
+                 With("effects.squeeze_film.mean_free_path", "-1e-9"),
+                 "effects.squeeze_film.mean_free_path = -1e-09", "must be non-negative"},
+        BadScene{"squeeze_film_in_modal",
+                 With("effects.squeeze_film", "{}").Set("analysis.type", "\"modal\""),
+                 "effects.squeeze_film = {}", "not available for analysis.type = \"modal\""}),
     CaseName);
 
 // The haptic analysis: its rate, the model it touches, and the [device] keys.

@@ -1,13 +1,14 @@
-// The haptic scene's steps allocate nothing: contact, stiction and the Casimir force composed at
-// compile time, through a press that makes the tip touch and stick and a pull that peels it off
-// (the multiplier updates, the compliance factorisation of the peel test and the adaptive
-// quadrature all run within the counted steps).
+// The haptic scene's steps allocate nothing: contact, stiction, the Casimir force and the gas
+// film composed at compile time, through a press that makes the tip touch and stick and a pull
+// that peels it off (the multiplier updates, the compliance factorisation of the peel test and
+// the adaptive quadrature all run within the counted steps).
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
 #include "cosmems/core/force_tuple.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/surface/squeeze_film.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
@@ -24,9 +25,10 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
   contact.separation = 2e-8;
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
-  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
+  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>, SqueezeFilm<2>> forces(
       SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(model, CasimirPressure{}, GapSpan{gap, 0.0, length}));
+      GapForce<2, CasimirPressure>(model, CasimirPressure{}, GapSpan{gap, 0.0, length}),
+      SqueezeFilm<2>(model, SqueezeFilmOptions{}, gap));
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0),
                                         1e-4 / model.units().time);

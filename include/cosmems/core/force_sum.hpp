@@ -21,6 +21,14 @@ class ForceSum final : public NonlinearForce {
     return true;
   }
 
+  bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
+                       Eigen::VectorXd& force, ForceTangent& tangent) override {
+    for (NonlinearForce* f : forces_) {
+      if (!f->EvaluateViscous(d, v, velocity_factor, force, tangent)) return false;
+    }
+    return true;
+  }
+
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;
     for (NonlinearForce* f : forces_) settled = f->Settle(d) && settled;

@@ -21,6 +21,14 @@ class ForceTuple final : public NonlinearForce {
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     return std::apply([&](auto&... f) { return (f.Evaluate(d, force, tangent) && ...); }, forces_);
   }
+  bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
+                       Eigen::VectorXd& force, ForceTangent& tangent) override {
+    return std::apply(
+        [&](auto&... f) {
+          return (f.EvaluateViscous(d, v, velocity_factor, force, tangent) && ...);
+        },
+        forces_);
+  }
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;  // every member settles, even after one has changed its state
     std::apply([&](auto&... f) { ((settled = f.Settle(d) && settled), ...); }, forces_);

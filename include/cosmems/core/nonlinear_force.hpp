@@ -50,6 +50,9 @@ class ForceTangent {
 /// linear structure: M a + C v + K d + r(d) = f. Geometric stiffening, stretching, contact and
 /// surface forces implement it. Evaluate() runs inside Newton iterations: it must allocate
 /// nothing, and it reports a state outside its domain by returning false (the step is then cut).
+/// A force that also depends on the velocity, a gas film's damping, adds that part in
+/// EvaluateViscous(), which the time integrators call beside Evaluate(); a state at rest has none,
+/// so statics leave it out.
 class NonlinearForce {
  public:
   virtual ~NonlinearForce() = default;
@@ -58,6 +61,15 @@ class NonlinearForce {
   /// part if the force needs one), both in the model's internal units.
   virtual bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
                         ForceTangent& tangent) = 0;
+
+  /// Adds the velocity-dependent part r_v(d, v) to `force` and dr_v/dd + velocity_factor dr_v/dv
+  /// to `tangent`, velocity_factor being dv/dd along the step (gamma / (beta h) for Newmark).
+  /// Allocates nothing. A force without one keeps this default.
+  virtual bool EvaluateViscous(const Eigen::VectorXd& /*d*/, const Eigen::VectorXd& /*v*/,
+                               double /*velocity_factor*/, Eigen::VectorXd& /*force*/,
+                               ForceTangent& /*tangent*/) {
+    return true;
+  }
 
   // A force with an internal state (contact multipliers, stuck nodes) takes part in the solvers'
   // protocol below; a plain force r(d) keeps the defaults.

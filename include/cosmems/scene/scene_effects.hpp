@@ -51,6 +51,13 @@ struct DampingEffect {
   std::optional<std::array<double, 2>> rayleigh;  ///< [alpha 1/s, beta s], each >= 0
 };
 
+/// [effects.squeeze_film]: the gas film's damping between beam and substrate.
+struct SqueezeFilmEffect {
+  bool enabled = true;
+  std::optional<double> viscosity;       ///< Pa s, > 0 (default: air at 20 C, 1.81e-5)
+  std::optional<double> mean_free_path;  ///< m, >= 0 (default 0: no rarefaction)
+};
+
 /// Whether an effect is simulated: its table present and not disabled.
 template <typename Effect>
 bool IsOn(const std::optional<Effect>& effect) {
@@ -65,12 +72,17 @@ struct SceneEffects {
   std::optional<CasimirEffect> casimir;
   std::optional<VanDerWaalsEffect> van_der_waals;
   std::optional<DampingEffect> damping;
+  std::optional<SqueezeFilmEffect> squeeze_film;
 
   /// Contact with the substrate: [effects.contact], or [effects.stiction], which implies it.
   bool HasContact() const { return IsOn(contact) || IsOn(stiction); }
   /// A pressure across the gap: electrostatic, Casimir or van der Waals.
   bool HasSurfacePressure() const {
     return IsOn(electrostatic) || IsOn(casimir) || IsOn(van_der_waals);
+  }
+  /// Anything acting through the substrate: contact, a pressure or the gas film.
+  bool HasSurfaceEffect() const {
+    return HasContact() || HasSurfacePressure() || IsOn(squeeze_film);
   }
 };
 

@@ -9,6 +9,7 @@
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/surface/squeeze_film.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 
 namespace cosmems {
@@ -32,6 +33,13 @@ class SceneForces {
     }
     const double length = scene.structure.length;
     const double gap = scene.structure.gap.value_or(0.0);
+    if (IsOn(e.squeeze_film)) {
+      SqueezeFilmOptions film;
+      film.viscosity = e.squeeze_film->viscosity.value_or(film.viscosity);
+      film.mean_free_path = e.squeeze_film->mean_free_path.value_or(film.mean_free_path);
+      squeeze_film_ = std::make_unique<SqueezeFilm<Dim>>(model, film, gap);
+      structural_.Add(*squeeze_film_);
+    }
     // A pull-in analysis scales the electrode's pressure itself: it is the analysis's unknown.
     if (IsOn(e.electrostatic) && e.electrostatic->voltage &&
         scene.analysis.type != AnalysisType::kPullin) {
@@ -55,7 +63,7 @@ class SceneForces {
 
   /// Every force, or nullptr when the scene declares none (the linear fast path).
   NonlinearForce* All() { return Empty() ? nullptr : &all_; }
-  /// Stretching and contact (perhaps none).
+  /// Stretching, contact and the gas film (perhaps none).
   ForceSum& structural() { return structural_; }
   /// The gap pressures: electrostatic, Casimir, van der Waals (perhaps none).
   ForceSum& pressures() { return pressures_; }
@@ -73,6 +81,7 @@ class SceneForces {
 
   std::unique_ptr<StretchingForce<Dim>> stretching_;
   std::unique_ptr<SubstrateContact<Dim>> contact_;
+  std::unique_ptr<SqueezeFilm<Dim>> squeeze_film_;
   std::vector<std::unique_ptr<NonlinearForce>> owned_;
   ForceSum structural_, pressures_, all_;
 };

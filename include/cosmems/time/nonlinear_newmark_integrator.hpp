@@ -17,9 +17,12 @@
 
 namespace cosmems {
 
-/// The nonlinear path of the Newmark family: M a + C v + K d + r(d) = f, generalised-alpha
+/// The nonlinear path of the Newmark family: M a + C v + K d + r(d, v) = f, generalised-alpha
 /// balance, Newton on d_(n+1) with the consistent tangent
-///   J = (1-am)/(beta dt^2) M + (1-af) gamma/(beta dt) C + (1-af) (K + dr/dd (d_(n+1))).
+///   J = (1-am)/(beta dt^2) M + (1-af) gamma/(beta dt) C
+///       + (1-af) (K + dr/dd + gamma/(beta dt) dr/dv (d_(n+1), v_(n+1))),
+/// r's velocity-dependent part (NonlinearForce::EvaluateViscous) taken at v_(n+1), which Newmark
+/// ties to d_(n+1).
 /// The nonlinear force enters the balance interpolated, (1-af) r(d_(n+1)) + af r(d_n), rather
 /// than evaluated at the interpolated state (Erlicher, Bonaventura & Bursi 2002: the same order
 /// and dissipation): a constraint force, contact, then holds the state at the end of the step,
@@ -83,8 +86,9 @@ class NonlinearNewmarkIntegrator {
     // Sizes the factor's buffers now (rank-one part included), so that no step allocates them.
     (void)factor_.Compute(mass, 1.0, Eigen::VectorXd::Zero(n));
     for (Eigen::VectorXd* v :
-         {&d_, &v_, &a_, &f_, &d_new_, &a_new_, &d_mid_, &v_mid_, &residual_, &work_, &r_, &f_mid_,
-          &d_star_, &v_star_, &d_save_, &v_save_, &a_save_, &r_start_, &r_save_}) {
+         {&d_,      &v_,      &a_,        &f_,      &d_new_,   &v_new_, &a_new_,
+          &d_mid_,  &v_mid_,  &residual_, &work_,   &r_,       &f_mid_, &d_star_,
+          &v_star_, &d_save_, &v_save_,   &a_save_, &r_start_, &r_save_}) {
       v->setZero(n);
     }
   }
@@ -100,7 +104,9 @@ class NonlinearNewmarkIntegrator {
     factor_valid_ = false;
     r_.setZero();
     tangent_.Clear();
-    if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
+    if (!force_.Evaluate(d_, r_, tangent_) || !force_.EvaluateViscous(d_, v_, 0.0, r_, tangent_)) {
+      return Status::kNonFinite;
+    }
     r_start_ = r_;
     force_.Commit(d_);
     return InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0 - r_, a_);
@@ -194,7 +200,11 @@ class NonlinearNewmarkIntegrator {
       const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
       r_.setZero();
       tangent_.Clear();
-      if (!force_.Evaluate(d_new_, r_, tangent_)) return Status::kNonFinite;
+      v_new_ = v_star_ + (gamma * h) * a_new_;
+      if (!force_.Evaluate(d_new_, r_, tangent_) ||
+          !force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
+        return Status::kNonFinite;
+      }
       // R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for the scale.
       if (am != 0.0) {
         work_ = (1.0 - am) * a_new_ + am * a_;
@@ -336,8 +346,8 @@ class NonlinearNewmarkIntegrator {
   double factor_contraction_ = 1.0;
   double factor_cm_ = 0.0, factor_ck_ = 0.0, factor_ct_ = 0.0;
   const Eigen::VectorXd* f_target_ = nullptr;
-  Eigen::VectorXd d_, v_, a_, f_, d_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_, f_mid_,
-      d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;
+  Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
+      f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;
 };
 
 }  // namespace cosmems
