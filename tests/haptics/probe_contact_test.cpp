@@ -81,7 +81,7 @@ TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
     // -z case sits 0.2 um off the section's centre: the side is taken unbounded in y.
     EXPECT_NEAR(touch.depth_m, depth, 1e-12) << c.centre.transpose();
     EXPECT_EQ(touch.normal, ProbeContact<3>::Normal(c.face));
-    EXPECT_NEAR(probe.Reaction(d).norm(), kCoupling * depth, 1e-12 * kCoupling);
+    EXPECT_NEAR(touch.force_n, kCoupling * depth, 1e-12 * kCoupling);
   }
 }
 
@@ -308,7 +308,7 @@ TEST(ProbeContactTest, BesideTheBeamOrLostItTouchesNothing) {
     probe.MoveTo(p);
     ASSERT_TRUE(probe.Evaluate(d, r, tangent));
     EXPECT_EQ(r.norm(), 0.0);
-    EXPECT_EQ(probe.Reaction(d).norm(), 0.0);
+    EXPECT_EQ(probe.Touch(d).force_n, 0.0);
   }
   // Just past the tip and above it, the sphere clears the tip's upper edge by sqrt(r^2 - h^2).
   probe.MoveTo(Eigen::Vector3d(201e-6, 1e-6 + 2e-6 - 0.1e-6, 0.0));

@@ -21,6 +21,12 @@ class ForceSum final : public NonlinearForce {
     return true;
   }
 
+  bool HasViscousPart() const override {
+    for (const NonlinearForce* f : forces_) {
+      if (f->HasViscousPart()) return true;
+    }
+    return false;
+  }
   bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
                        Eigen::VectorXd& force, ForceTangent& tangent) override {
     for (NonlinearForce* f : forces_) {

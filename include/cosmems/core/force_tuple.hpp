@@ -21,6 +21,9 @@ class ForceTuple final : public NonlinearForce {
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     return std::apply([&](auto&... f) { return (f.Evaluate(d, force, tangent) && ...); }, forces_);
   }
+  bool HasViscousPart() const override {
+    return std::apply([](const auto&... f) { return (f.HasViscousPart() || ...); }, forces_);
+  }
   bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
                        Eigen::VectorXd& force, ForceTangent& tangent) override {
     return std::apply(

@@ -62,6 +62,9 @@ class NonlinearForce {
   virtual bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
                         ForceTangent& tangent) = 0;
 
+  /// Whether EvaluateViscous() adds anything: the integrators skip the velocity it needs when
+  /// no force has a velocity-dependent part.
+  virtual bool HasViscousPart() const { return false; }
   /// Adds the velocity-dependent part r_v(d, v) to `force` and dr_v/dd + velocity_factor dr_v/dv
   /// to `tangent`, velocity_factor being dv/dd along the step (gamma / (beta h) for Newmark).
   /// Allocates nothing. A force without one keeps this default.

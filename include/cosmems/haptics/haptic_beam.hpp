@@ -146,7 +146,7 @@ class HapticBeam {
     local_.source_time_s = source_time_s;
     local_.normal = touch.normal;
     local_.stiffness_n_per_m = compliance > 0.0 ? k_c / (1.0 + k_c * compliance) : k_c;
-    local_.force_n = touch.depth_m > 0.0 ? k_c * touch.depth_m : 0.0;
+    local_.force_n = touch.force_n;
     local_.clearance_m = touch.depth_m < 0.0 ? -touch.depth_m : 0.0;
     local_.valid = status_ == Status::kOk && std::isfinite(local_.force_n);
   }

@@ -29,11 +29,13 @@ enum class ProbeFace { kUpper = 0, kLower, kPositiveZ, kNegativeZ, kFirstEnd, kL
 inline constexpr int kProbeFaceCount = 6;
 
 /// Where the probe meets the beam at a state: the face it presses on (or is nearest to), its
-/// outward normal, and the depth along it [m] (negative: the clearance; -inf: out of reach).
+/// outward normal, the depth along it [m] (negative: the clearance; -inf: out of reach) and the
+/// force the beam pushes the probe with along the normal [N] (>= 0).
 struct ProbeTouch {
   ProbeFace face = ProbeFace::kUpper;
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();
   double depth_m = -std::numeric_limits<double>::infinity();
+  double force_n = 0.0;
 };
 
 /// The probe pressing on the beam's faces, as a NonlinearForce. The sphere's centre p is in the
@@ -167,13 +169,8 @@ class ProbeContact final : public NonlinearForce {
     touch.face = face;
     touch.normal = Normal(face);
     touch.depth_m = delta * units_.length;
+    touch.force_n = delta > 0.0 ? stiffness_ * delta * units_.force : 0.0;
     return touch;
-  }
-  /// The force the beam pushes the probe with at d [N], along the face's outward normal.
-  Eigen::Vector3d Reaction(const Eigen::VectorXd& d) const {
-    const ProbeTouch touch = Touch(d);
-    return touch.depth_m > 0.0 ? Eigen::Vector3d(stiffness_n_per_m() * touch.depth_m * touch.normal)
-                               : Eigen::Vector3d::Zero();
   }
   /// The shape vector N_f of the face's point under the probe (reduced dofs, internal units), for
   /// the beam's compliance there; zero for a face that does not move.

@@ -53,6 +53,8 @@ class SqueezeFilm final : public NonlinearForce {
     return true;  // at rest the film carries nothing
   }
 
+  bool HasViscousPart() const override { return true; }
+
   bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
                        Eigen::VectorXd& force, ForceTangent& tangent) override {
     const double length_m = integral_.length_m();

@@ -104,7 +104,8 @@ class NonlinearNewmarkIntegrator {
     factor_valid_ = false;
     r_.setZero();
     tangent_.Clear();
-    if (!force_.Evaluate(d_, r_, tangent_) || !force_.EvaluateViscous(d_, v_, 0.0, r_, tangent_)) {
+    if (!force_.Evaluate(d_, r_, tangent_) ||
+        (force_.HasViscousPart() && !force_.EvaluateViscous(d_, v_, 0.0, r_, tangent_))) {
       return Status::kNonFinite;
     }
     r_start_ = r_;
@@ -177,6 +178,7 @@ class NonlinearNewmarkIntegrator {
     const double cm = (1.0 - am) * ca + (1.0 - af) * gamma / (beta * h) * damping_.mass;
     const double ck = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
     const double ct = 1.0 - af;
+    const bool viscous = force_.HasViscousPart();
     // Predictor d_(n+1) = d_n + h v_n + persistence h^2/2 a_n (see the class comment).
     d_new_ = d_ + h * v_ + (persistence_ * 0.5 * h * h) * a_;
     a_new_ = ca * (d_new_ - d_star_);
@@ -200,10 +202,12 @@ class NonlinearNewmarkIntegrator {
       const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
       r_.setZero();
       tangent_.Clear();
-      v_new_ = v_star_ + (gamma * h) * a_new_;
-      if (!force_.Evaluate(d_new_, r_, tangent_) ||
-          !force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
-        return Status::kNonFinite;
+      if (!force_.Evaluate(d_new_, r_, tangent_)) return Status::kNonFinite;
+      if (viscous) {
+        v_new_ = v_star_ + (gamma * h) * a_new_;
+        if (!force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
+          return Status::kNonFinite;
+        }
       }
       // R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for the scale.
       if (am != 0.0) {
