@@ -2,7 +2,9 @@
 # One-step set-up and entry points on a fresh Debian 12 machine:
 #   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever-haptic)
 #   bash cmake/bootstrap.sh test            build, then run the whole test suite with CTest
-#   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks, then run one
+#   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks on, then run one
+#   bash cmake/bootstrap.sh sanitize        the unit tests under AddressSanitizer + UBSan (build/asan)
+#   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and --set with libFuzzer (clang)
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
 # otherwise prints the exact apt-get line and stops. COSMEMS_BUILD_DIR overrides build/release.
 set -euo pipefail
@@ -10,6 +12,8 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev
   libbenchmark-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev)
+# libFuzzer comes with clang's runtime libraries; only the fuzzer needs them.
+if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -51,6 +55,43 @@ case "${1:-}" in
     if [ $# -eq 0 ]; then ls "$build_dir/bench"; exit 0; fi
     name=$1; shift
     exec "$build_dir/bench/$name" "$@" ;;
-  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]]" >&2
+  sanitize)
+    # The code that reads outside input, indexes raw memory or crosses into C: the scene reader
+    # (with the fuzzer's kept inputs), the band factorisations and their kernels, the trajectory
+    # files and scripted device, and the OpenHaptics backend with the fake HD library. The
+    # element, model and haptic-physics tests would take this build from about 4 to 15
+    # CPU-minutes, which CI cannot afford beside the main build; COSMEMS_ASAN_TARGETS=all
+    # runs them all.
+    # The malloc-counting tests are never built here (the sanitizer owns malloc).
+    asan_dir=${COSMEMS_ASAN_DIR:-build/asan}
+    cmake -S . -B "$asan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOSMEMS_SANITIZE=address,undefined \
+      -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
+    default_targets="cosmems_scene_tests cosmems_linalg_tests cosmems_scripted_tests"
+    default_targets+=" cosmems_openhaptics_tests"
+    read -r -a targets <<< "${COSMEMS_ASAN_TARGETS:-$default_targets}"
+    cmake --build "$asan_dir" -j"$jobs" --target "${targets[@]}"
+    exec ctest --test-dir "$asan_dir" --output-on-failure -j"$jobs" -L unit ;;
+  fuzz)
+    seconds=${2:-60}
+    fuzz_dir=${COSMEMS_FUZZ_DIR:-build/fuzz}
+    cmake -S . -B "$fuzz_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCOSMEMS_SANITIZE=address,undefined,fuzzer-no-link -DCOSMEMS_BUILD_FUZZERS=ON \
+      -DCOSMEMS_BUILD_TESTS=OFF -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
+    cmake --build "$fuzz_dir" -j"$jobs" --target scene_fuzzer
+    # New inputs go to the first (scratch) corpus; the shipped scenes and kept inputs seed it. A
+    # failing input is written to $fuzz_dir/crash-* and belongs in tests/fuzz/regressions.
+    mkdir -p "$fuzz_dir/corpus"
+    seeds=(src/scene/scenes tests/fuzz/seeds)
+    if [ -d tests/fuzz/regressions ]; then seeds+=(tests/fuzz/regressions); fi
+    # libFuzzer reports every new input it finds: that goes to a log, and only a failure's
+    # report and the final figures are printed.
+    if ! "$fuzz_dir/tests/fuzz/scene_fuzzer" -max_total_time="$seconds" -timeout=10 \
+      -rss_limit_mb=2048 -print_final_stats=1 -dict=tests/fuzz/scene.dict \
+      -artifact_prefix="$fuzz_dir/" "$fuzz_dir/corpus" "${seeds[@]}" > "$fuzz_dir/fuzz.log" 2>&1; then
+      tail -n 80 "$fuzz_dir/fuzz.log" >&2
+      exit 1
+    fi
+    grep -E '^(Done|stat::)' "$fuzz_dir/fuzz.log" ;;
+  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS]" >&2
      exit 2 ;;
 esac

@@ -1,0 +1,45 @@
+#include "scene_fuzz_input.hpp"
+
+#include <cosmems/scene/scene_conversion.hpp>
+#include <cosmems/scene/scene_error.hpp>
+#include <cosmems/scene/scene_loader.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cosmems::fuzz {
+namespace {
+
+// Every conversion the CLI makes before it builds a model: a scene the loader accepts must
+// convert without an error (the loader promises validated scenes).
+void Convert(const Scene& scene) {
+  MakeBeamDescription(scene);
+  MakeLoadCase(scene);
+  MakeDampingModel(scene);
+  MakeLoadTimeFunction(scene);
+  MakeIntegratorParameters(scene.analysis);
+  if (scene.analysis.type == AnalysisType::kTransient) MakeTransientOptions(scene);
+  if (scene.analysis.type == AnalysisType::kPullin) MakePullInOptions(scene);
+  if (scene.effects.HasContact()) MakeContactOptions(scene);
+}
+
+}  // namespace
+
+void LoadFuzzedScene(const std::uint8_t* data, std::size_t size) {
+  const std::string_view input(reinterpret_cast<const char*>(data), size);
+  std::size_t end = input.find('\0');
+  const std::string_view toml = input.substr(0, end);
+  std::vector<SceneOverride> overrides;
+  try {
+    while (end != std::string_view::npos) {
+      const std::size_t next = input.find('\0', end + 1);
+      overrides.push_back(SceneOverride::Parse(std::string(input.substr(end + 1, next - end - 1))));
+      end = next;
+    }
+    Convert(LoadSceneText(toml, "fuzz", overrides));
+  } catch (const SceneError&) {
+    // The clear error bad input deserves.
+  }
+}
+
+}  // namespace cosmems::fuzz
