@@ -13,6 +13,20 @@ inline Material Silicon() { return Material{169e9, 2330.0, 0.22}; }
 inline RectangularSection ReferenceSection() { return RectangularSection{20e-6, 2e-6}; }
 inline constexpr double kReferenceLength = 200e-6;
 
+/// The reference section's bending stiffnesses (toward the substrate, across the width) and
+/// mass per length, in silicon.
+inline double Eiz() { return Silicon().young_modulus * ReferenceSection().SecondMomentZ(); }
+inline double Eiy() { return Silicon().young_modulus * ReferenceSection().SecondMomentY(); }
+inline double RhoA() { return Silicon().density * ReferenceSection().Area(); }
+
+/// A 1 x 1 system (a single-degree-of-freedom oscillator's mass or stiffness) and its vectors.
+inline SymmetricBandMatrix Scalar(double value) {
+  SymmetricBandMatrix m(1, 0);
+  m.Add(0, 0, value);
+  return m;
+}
+inline Eigen::VectorXd Vec(double value) { return Eigen::VectorXd::Constant(1, value); }
+
 /// The n-th positive root (n = 1, 2, ...) of cos x cosh x = sign: sign = -1 for a cantilever,
 /// +1 for a clamped-clamped beam. Newton from the asymptotic root (2n - 1) pi / 2 (cantilever)
 /// or (2n + 1) pi / 2 (clamped-clamped), which lies within 0.2 % of it.

@@ -12,10 +12,9 @@
 namespace cosmems {
 namespace {
 
-const double kL = test::kReferenceLength;
-
-double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
-double RhoA() { return test::Silicon().density * test::ReferenceSection().Area(); }
+using test::Eiz;
+using test::kReferenceLength;
+using test::RhoA;
 
 // Columns: cosh(a x), sinh(a x), cos(b x), sin(b x); row k holds their k-th derivative at x.
 Eigen::Matrix4d Basis(double a, double b, double x) {
@@ -68,9 +67,9 @@ double ExactLambda(StructureKind kind, double tau, int mode) {
 }
 
 double Frequency(StructureKind kind, double tau, int elements, int order, int mode) {
-  BeamDescription beam =
-      MakeStructure(kind, kL, test::Silicon(), test::ReferenceSection(), elements, order);
-  beam.axial_load = tau * Eiz() / (kL * kL);
+  BeamDescription beam = MakeStructure(kind, kReferenceLength, test::Silicon(),
+                                       test::ReferenceSection(), elements, order);
+  beam.axial_load = tau * Eiz() / (kReferenceLength * kReferenceLength);
   ModalOptions options;
   options.count = mode;
   const ModalResult result = SolveModal(BeamModel<2>(beam), options);
@@ -79,7 +78,8 @@ double Frequency(StructureKind kind, double tau, int elements, int order, int mo
 }
 
 double ExactFrequency(StructureKind kind, double tau, int mode) {
-  return std::sqrt(ExactLambda(kind, tau, mode)) / (2 * kPi * kL * kL) * std::sqrt(Eiz() / RhoA());
+  return std::sqrt(ExactLambda(kind, tau, mode)) / (2 * kPi * kReferenceLength * kReferenceLength) *
+         std::sqrt(Eiz() / RhoA());
 }
 
 struct Prestress {
@@ -125,23 +125,23 @@ TEST(AxialLoadTest, TensionStiffensAndCompressionSoftensUnloadedFrequency) {
 TEST(AxialLoadTest, CantileverTipDeflectionMatchesSecondOrderTheory) {
   const double p = -1e-7;
   for (double tau : {-2.0, 5.0, 50.0}) {
-    const double n = tau * Eiz() / (kL * kL);
+    const double n = tau * Eiz() / (kReferenceLength * kReferenceLength);
     const double kl = std::sqrt(std::abs(tau));
-    const double exact = tau > 0 ? p * kL / (n * kl) * (kl - std::tanh(kl))
-                                 : p * kL / (-n * kl) * (std::tan(kl) - kl);
+    const double exact = tau > 0 ? p * kReferenceLength / (n * kl) * (kl - std::tanh(kl))
+                                 : p * kReferenceLength / (-n * kl) * (std::tan(kl) - kl);
     for (int dim : {2, 3}) {
-      BeamDescription beam = MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                           test::ReferenceSection(), 40, 1);
+      BeamDescription beam = MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                           test::Silicon(), test::ReferenceSection(), 40, 1);
       beam.axial_load = n;
       LoadCase loads;
-      loads.points.push_back({kL, {0, p, 0}, Eigen::Vector3d::Zero()});
+      loads.points.push_back({kReferenceLength, {0, p, 0}, Eigen::Vector3d::Zero()});
       double tip = 0;
       if (dim == 2) {
         const BeamModel<2> model(beam);
-        tip = BeamField<2>(model, SolveStatic(model, loads).displacement).At(kL)[1];
+        tip = BeamField<2>(model, SolveStatic(model, loads).displacement).At(kReferenceLength)[1];
       } else {
         const BeamModel<3> model(beam);
-        tip = BeamField<3>(model, SolveStatic(model, loads).displacement).At(kL)[1];
+        tip = BeamField<3>(model, SolveStatic(model, loads).displacement).At(kReferenceLength)[1];
       }
       EXPECT_NEAR(tip, exact, 4e-7 * std::abs(exact)) << "tau " << tau << " dim " << dim;
     }
@@ -149,11 +149,11 @@ TEST(AxialLoadTest, CantileverTipDeflectionMatchesSecondOrderTheory) {
 }
 
 TEST(AxialLoadTest, CompressionBeyondBucklingIsReportedNotSolved) {
-  BeamDescription beam = MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                       test::ReferenceSection(), 10, 1);
-  beam.axial_load = -3.0 * Eiz() / (kL * kL);  // beyond pi^2/4
+  BeamDescription beam = MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                       test::Silicon(), test::ReferenceSection(), 10, 1);
+  beam.axial_load = -3.0 * Eiz() / (kReferenceLength * kReferenceLength);  // beyond pi^2/4
   LoadCase loads;
-  loads.points.push_back({kL, {0, -1e-7, 0}, Eigen::Vector3d::Zero()});
+  loads.points.push_back({kReferenceLength, {0, -1e-7, 0}, Eigen::Vector3d::Zero()});
   EXPECT_EQ(SolveStatic(BeamModel<2>(beam), loads).status, Status::kNotPositiveDefinite);
 }
 

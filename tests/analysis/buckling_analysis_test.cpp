@@ -8,13 +8,13 @@
 namespace cosmems {
 namespace {
 
-const double kL = test::kReferenceLength;
-
-double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
-double Eiy() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentY(); }
+using test::Eiy;
+using test::Eiz;
+using test::kReferenceLength;
 
 BeamDescription Beam(Support first, Support last, int elements) {
-  BeamDescription beam = UniformBeam(kL, test::Silicon(), test::ReferenceSection(), elements, 1);
+  BeamDescription beam =
+      UniformBeam(kReferenceLength, test::Silicon(), test::ReferenceSection(), elements, 1);
   beam.supports.front() = first;
   beam.supports.back() = last;
   return beam;
@@ -41,7 +41,7 @@ class EulerLoadTest : public ::testing::TestWithParam<Case> {};
 // observed between 10 and 20 elements to within 0.3.
 TEST_P(EulerLoadTest, MatchesEulersLoadAndConvergesAsH4) {
   const Case c = GetParam();
-  const double exact = c.factor * Eiz() / (kL * kL);
+  const double exact = c.factor * Eiz() / (kReferenceLength * kReferenceLength);
   auto load = [&](int elements) {
     const BucklingResult r = SolveBuckling(BeamModel<2>(Beam(c.first, c.last, elements)));
     EXPECT_EQ(r.status, Status::kOk);
@@ -71,7 +71,7 @@ TEST(BucklingTest, SpatialBeamBucklesInItsWeakPlaneFirst) {
   options.count = 2;
   const BucklingResult r = SolveBuckling(model, options);
   ASSERT_EQ(r.status, Status::kOk);
-  const double unit = Eiz() / (kL * kL);
+  const double unit = Eiz() / (kReferenceLength * kReferenceLength);
   EXPECT_NEAR(r.modes[0].critical_load_n / unit, kPi * kPi / 4, 1e-6 * kPi * kPi / 4);
   EXPECT_NEAR(r.modes[1].critical_load_n / unit, 9 * kPi * kPi / 4, 2e-5 * 9 * kPi * kPi / 4);
   EXPECT_EQ(ClassifyMode(model, r.modes[0].shape), ModeKind::kBendingY);

@@ -7,14 +7,13 @@
 namespace cosmems {
 namespace {
 
-const double kL = test::kReferenceLength;
-
-double RhoA() { return test::Silicon().density * test::ReferenceSection().Area(); }
-double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
+using test::Eiz;
+using test::kReferenceLength;
+using test::RhoA;
 
 std::vector<double> Frequencies(StructureKind kind, int elements, int order, int count) {
-  const BeamModel<2> model(
-      MakeStructure(kind, kL, test::Silicon(), test::ReferenceSection(), elements, order));
+  const BeamModel<2> model(MakeStructure(kind, kReferenceLength, test::Silicon(),
+                                         test::ReferenceSection(), elements, order));
   ModalOptions options;
   options.count = count;
   const ModalResult result = SolveModal(model, options);
@@ -26,7 +25,7 @@ std::vector<double> Frequencies(StructureKind kind, int elements, int order, int
 
 double Exact(StructureKind kind, int n) {
   const double sign = kind == StructureKind::kCantilever ? -1.0 : 1.0;
-  return test::BendingFrequency(test::FrequencyRoot(n, sign), kL, Eiz(), RhoA());
+  return test::BendingFrequency(test::FrequencyRoot(n, sign), kReferenceLength, Eiz(), RhoA());
 }
 
 class FirstFourModesTest : public ::testing::TestWithParam<StructureKind> {};
@@ -85,7 +84,8 @@ TEST(ModalAnalysisTest, HigherSeriesOrdersAreMoreAccurate) {
 TEST(ModalAnalysisTest, SpatialModesHaveTheirKindsAndFrequencies) {
   const Material si = test::Silicon();
   const RectangularSection s = test::ReferenceSection();
-  const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, kL, si, s, 30, 1));
+  const BeamModel<3> model(
+      MakeStructure(StructureKind::kCantilever, kReferenceLength, si, s, 30, 1));
   ModalOptions options;
   options.count = 8;
   const ModalResult r = SolveModal(model, options);
@@ -97,9 +97,10 @@ TEST(ModalAnalysisTest, SpatialModesHaveTheirKindsAndFrequencies) {
     return -1.0;
   };
   const double eiy = si.young_modulus * s.SecondMomentY();
-  const double bending_z = test::BendingFrequency(test::FrequencyRoot(1, -1), kL, eiy, RhoA());
+  const double bending_z =
+      test::BendingFrequency(test::FrequencyRoot(1, -1), kReferenceLength, eiy, RhoA());
   const double torsion =
-      0.25 / kL *
+      0.25 / kReferenceLength *
       std::sqrt(si.ShearModulus() * s.TorsionConstant() / (si.density * s.PolarMoment()));
   EXPECT_EQ(r.modes[0].kind, ModeKind::kBendingY);
   EXPECT_NEAR(first_of(ModeKind::kBendingY), Exact(StructureKind::kCantilever, 1),
@@ -138,7 +139,8 @@ TEST(ModalAnalysisTest, FewerDegreesOfFreedomThanModesRequested) {
 }
 
 TEST(ModalAnalysisTest, UnsupportedBeamIsAStatus) {
-  const BeamModel<2> model(UniformBeam(kL, test::Silicon(), test::ReferenceSection(), 3, 1));
+  const BeamModel<2> model(
+      UniformBeam(kReferenceLength, test::Silicon(), test::ReferenceSection(), 3, 1));
   EXPECT_EQ(SolveModal(model).status, Status::kNotPositiveDefinite);
 }
 

@@ -10,27 +10,27 @@
 namespace cosmems {
 namespace {
 
-const double kL = test::kReferenceLength;
+using test::kReferenceLength;
 
 BeamModel<2> Reference() {
-  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                     test::ReferenceSection(), 20, 0));
 }
 
 LoadCase TipForce() {
   LoadCase loads;
-  loads.points.push_back({kL, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back({kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
   return loads;
 }
 
 double Period1() {
   const double ei = test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ();
   const double rho_a = test::Silicon().density * test::ReferenceSection().Area();
-  return 1.0 / test::BendingFrequency(test::FrequencyRoot(1, -1), kL, ei, rho_a);
+  return 1.0 / test::BendingFrequency(test::FrequencyRoot(1, -1), kReferenceLength, ei, rho_a);
 }
 
 double StaticTip() {
-  return -1e-7 * kL * kL * kL /
+  return -1e-7 * kReferenceLength * kReferenceLength * kReferenceLength /
          (3 * test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ());
 }
 
@@ -42,7 +42,7 @@ TransientOptions Release(TimePath path, int modes, double periods, int steps_per
   o.modes = modes;
   o.parameters = GeneralizedAlphaParameters::Newmark(0.25, 0.5);
   o.start_static = true;
-  o.output_x = kL;
+  o.output_x = kReferenceLength;
   return o;
 }
 
@@ -103,7 +103,7 @@ TEST(TransientAnalysisTest, StepLoadOvershootsToTwiceTheStaticDeflection) {
   TransientOptions o;
   o.duration = 2 * Period1();
   o.time_step = Period1() / 400;
-  o.output_x = kL;
+  o.output_x = kReferenceLength;
   o.parameters = GeneralizedAlphaParameters::Newmark(0.25, 0.5);
   const TransientResult full = RunTransient(model, TipForce(), o);
   o.path = TimePath::kModal;
@@ -132,7 +132,7 @@ TEST(TransientAnalysisTest, ExplicitStepAboveItsLimitIsReportedAsDiverged) {
   const double critical = 2.0 / std::sqrt(eig.eigenvalues().maxCoeff()) * model.units().time;
   TransientOptions o;
   o.parameters = GeneralizedAlphaParameters::CentralDifference();
-  o.output_x = kL;
+  o.output_x = kReferenceLength;
   o.time_step = 1.01 * critical;
   o.duration = 20000 * o.time_step;
   const TransientResult unstable = RunTransient(model, TipForce(), o);

@@ -15,15 +15,15 @@
 namespace cosmems {
 namespace {
 
-const double kL = test::kReferenceLength;
+using test::Eiz;
+using test::kReferenceLength;
 const double kThickness = test::ReferenceSection().thickness;
 
-double Eiz() { return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ(); }
 double Ea() { return test::Silicon().young_modulus * test::ReferenceSection().Area(); }
 
 BeamDescription Bridge(int elements, int order = 1) {
-  return MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(),
-                       elements, order);
+  return MakeStructure(StructureKind::kBridge, kReferenceLength, test::Silicon(),
+                       test::ReferenceSection(), elements, order);
 }
 
 LoadCase Uniform(double q) {
@@ -53,14 +53,14 @@ TEST(StretchingForceTest, ForceAndTangentMatchFiniteDifferencesOfTheEnergy) {
 }
 
 TEST(StretchingForceTest, RefusesABeamWithAFreeEnd) {
-  const BeamModel<2> cantilever(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                              test::ReferenceSection(), 4, 1));
+  const BeamModel<2> cantilever(MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                              test::Silicon(), test::ReferenceSection(), 4, 1));
   EXPECT_THROW(StretchingForce<2>{cantilever}, std::invalid_argument);
 }
 
 // The exact bridge of the reference section (tests/beam/stretched_bridge.hpp).
 test::StretchedBridge SolveExactBridge(double q, double n0) {
-  return test::SolveStretchedBridge(kL, Eiz(), Ea(), q, n0);
+  return test::SolveStretchedBridge(kReferenceLength, Eiz(), Ea(), q, n0);
 }
 
 template <int Dim>
@@ -83,12 +83,12 @@ TEST(StretchingForceTest, UniformlyLoadedBridgeMatchesTheExactSolution) {
     beam.axial_load = n0;
     const BeamModel<2> model(beam);
     const NonlinearStaticSolution s = SolveBridge(model, q);
-    const double midspan = BeamField<2>(model, s.displacement).At(kL / 2)[1];
+    const double midspan = BeamField<2>(model, s.displacement).At(kReferenceLength / 2)[1];
     const double tension =
         StretchingForce<2>(model).AxialForce(s.displacement) * model.units().force;
     EXPECT_NEAR(midspan, exact.midspan, 1e-4 * std::abs(exact.midspan)) << n0;
     EXPECT_NEAR(tension, exact.tension, 1e-4 * exact.tension) << n0;
-    const double linear = q * std::pow(kL, 4) / (384 * Eiz());
+    const double linear = q * std::pow(kReferenceLength, 4) / (384 * Eiz());
     EXPECT_GT(std::abs(linear), 10 * std::abs(midspan));
     EXPECT_GT(std::abs(midspan), 3 * kThickness);
   }

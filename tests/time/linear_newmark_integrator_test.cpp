@@ -12,13 +12,9 @@
 namespace cosmems {
 namespace {
 
-SymmetricBandMatrix Scalar(double value) {
-  SymmetricBandMatrix m(1, 0);
-  m.Add(0, 0, value);
-  return m;
-}
+using test::Scalar;
 
-Eigen::VectorXd Vec(double value) { return Eigen::VectorXd::Constant(1, value); }
+using test::Vec;
 
 // Free vibration of q'' + w^2 q = 0 from q = 1; the period is measured from the upward zero
 // crossings (linearly interpolated) over 60 cycles.

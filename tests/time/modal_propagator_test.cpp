@@ -16,7 +16,7 @@ ModalPropagator Oscillator(double omega, double zeta, double dt) {
                          Eigen::MatrixXd(), dt);
 }
 
-Eigen::VectorXd Vec(double value) { return Eigen::VectorXd::Constant(1, value); }
+using test::Vec;
 
 // Damped free vibration from q = 1: q = e^(-z w t) (cos(wd t) + z w / wd sin(wd t)). The step
 // is 1/3 of a period: exact propagation does not care.

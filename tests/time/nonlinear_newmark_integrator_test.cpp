@@ -31,13 +31,9 @@ class NoForce : public NonlinearForce {
   bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, ForceTangent&) override { return true; }
 };
 
-SymmetricBandMatrix Scalar(double value) {
-  SymmetricBandMatrix m(1, 0);
-  m.Add(0, 0, value);
-  return m;
-}
+using test::Scalar;
 
-Eigen::VectorXd Vec(double value) { return Eigen::VectorXd::Constant(1, value); }
+using test::Vec;
 
 // x'' + x + 4 x^3 = 0.3 sin(2t) from x = 0.8 at rest, to t = 5, by RK4 with 1e5 steps (error
 // ~1e-16 of the step's h^4): the reference.
