@@ -12,6 +12,12 @@ namespace cosmems::test {
 inline Material Silicon() { return Material{169e9, 2330.0, 0.22}; }
 inline RectangularSection ReferenceSection() { return RectangularSection{20e-6, 2e-6}; }
 inline constexpr double kReferenceLength = 200e-6;
+inline constexpr double kReferenceWidth = 20e-6;
+inline constexpr double kReferenceThickness = 2e-6;
+/// The reference cantilever's gap to the substrate.
+inline constexpr double kReferenceGap = 2e-6;
+/// A relative tolerance at a few ulps of double's round-off, for results exact in exact arithmetic.
+inline constexpr double kRoundOff = 1e-14;
 
 /// The reference section's bending stiffnesses (toward the substrate, across the width) and
 /// mass per length, in silicon.

@@ -10,17 +10,19 @@
 namespace cosmems {
 namespace {
 
-constexpr double kRadius = 2e-6, kThickness = 2e-6;
+using test::kProbeRadius;
+using test::kReferenceThickness;
 
 // The probe centre over the tip with its lowest point `depth` below the undeformed upper face.
 Eigen::Vector3d OverTip(double depth) {
-  return Eigen::Vector3d(test::kReferenceLength, 0.5 * kThickness - depth + kRadius, 0.0);
+  return Eigen::Vector3d(test::kReferenceLength, 0.5 * kReferenceThickness - depth + kProbeRadius,
+                         0.0);
 }
 
 TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   const BeamModel<2> model = test::HapticCantilever();
   const double k_c = 5.0, k_tip = test::ReferenceTipStiffness();
-  HapticBeam<2> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
   const double depth = 0.5e-6;
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk);
   const double series = k_c * k_tip / (k_c + k_tip);
@@ -49,8 +51,9 @@ TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
   const double k_c = 5.0, depth = 0.5e-6;
   {
     const BeamModel<2> model = test::HapticCantilever();
-    HapticBeam<2> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
-    const Eigen::Vector3d under(test::kReferenceLength, -0.5 * kThickness + depth - kRadius, 0.0);
+    HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
+    const Eigen::Vector3d under(test::kReferenceLength,
+                                -0.5 * kReferenceThickness + depth - kProbeRadius, 0.0);
     for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(under, 0.0), Status::kOk);
     const double k_tip = test::ReferenceTipStiffness(), series = k_c * k_tip / (k_c + k_tip);
     const LocalModel& local = beam.local_model();
@@ -62,9 +65,9 @@ TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
   }
   const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
                                          test::Silicon(), test::ReferenceSection(), 20, 0));
-  HapticBeam<3> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
   const double width = 20e-6;
-  const Eigen::Vector3d beside(test::kReferenceLength, 0.0, 0.5 * width + kRadius - depth);
+  const Eigen::Vector3d beside(test::kReferenceLength, 0.0, 0.5 * width + kProbeRadius - depth);
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(beside, 0.0), Status::kOk);
   const double k_side = 100.0 * test::ReferenceTipStiffness(),
                series = k_c * k_side / (k_c + k_side);
@@ -80,7 +83,7 @@ TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
 TEST(HapticBeamTest, AHardPressHoldsTheBeamOnTheSubstrate) {
   const BeamModel<2> model = test::HapticCantilever();
   test::HapticSurface forces = test::MakeHapticSurface(model);
-  HapticBeam<2> beam(model, ProbeOptions{kRadius, 20.0}, &forces, &forces.get<0>());
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 20.0}, &forces, &forces.get<0>());
   for (int tick = 0; tick <= 400; ++tick) {
     const double depth = 10e-6 * std::min(1.0, tick / 300.0);
     ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk) << tick;
@@ -100,7 +103,7 @@ TEST(HapticBeamTest, APressOffTheAxisTwistsTheBeam) {
                                          test::Silicon(), test::ReferenceSection(), 20, 0),
                            DofNumbering::kByNode);
   const double k_c = 5.0, depth = 0.5e-6, z0 = 8e-6;
-  HapticBeam<3> beam(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
+  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
   const Eigen::Vector3d centre = OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z0);
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(centre, 0.0), Status::kOk);
   const Material silicon = test::Silicon();
@@ -123,9 +126,9 @@ TEST(HapticBeamTest, LaidDownByTheStylusItStaysStuckUntilReset) {
   test::HapticSurface forces = test::MakeHapticSurface(model);
   // A stiff coupling (50 N/m, 60 times the tip's stiffness) lays the beam down within a 3 um
   // press; a softer one needs the hand to travel farther.
-  HapticBeam<2> beam(model, ProbeOptions{kRadius, 50.0}, &forces, &forces.get<0>());
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 50.0}, &forces, &forces.get<0>());
   auto at = [](double x, double depth) {
-    return Eigen::Vector3d(x, 0.5 * kThickness - depth + kRadius, 0.0);
+    return Eigen::Vector3d(x, 0.5 * kReferenceThickness - depth + kProbeRadius, 0.0);
   };
   const double depth = 3e-6;
   for (int tick = 0; tick <= 200; ++tick) {

@@ -14,7 +14,9 @@
 namespace cosmems {
 namespace {
 
-constexpr double kRadius = 2e-6, kThickness = 2e-6, kCoupling = 5.0;
+using test::kProbeCoupling;
+using test::kProbeRadius;
+using test::kReferenceThickness;
 
 // 1 um of micro travel is 5 mm of hand travel; 1 uN is felt as 0.2 N.
 HapticLoopOptions Options(PhysicsThread physics) {
@@ -32,16 +34,16 @@ DeviceState Stylus(const HapticLoopOptions& options, int tick) {
   DeviceState state;
   state.tick = static_cast<std::uint64_t>(tick);
   state.time_s = 1e-3 * tick;
-  const double lowest_micro = 0.5 * kThickness + 2e-6 - 1e-6 * state.time_s;
-  state.position_m =
-      options.scaling.ToDevice(Eigen::Vector3d(test::kReferenceLength, lowest_micro + kRadius, 0));
+  const double lowest_micro = 0.5 * kReferenceThickness + 2e-6 - 1e-6 * state.time_s;
+  state.position_m = options.scaling.ToDevice(
+      Eigen::Vector3d(test::kReferenceLength, lowest_micro + kProbeRadius, 0));
   state.velocity_m_s = Eigen::Vector3d(0.0, -5e-3, 0.0);
   return state;
 }
 
 std::vector<double> ServoForces(PhysicsThread physics, int ticks) {
   const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kRadius, kCoupling}, nullptr, nullptr);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(physics);
   HapticLoop<2> loop(beam, options);
   std::vector<double> forces;
@@ -59,7 +61,7 @@ TEST(HapticLoopTest, TheHandFeelsTheScaledSeriesSpringAndTheSameForcesEveryRun) 
   const std::vector<double> first = ServoForces(PhysicsThread::kServo, 3000);
   EXPECT_EQ(first, ServoForces(PhysicsThread::kServo, 3000));  // bit for bit
   const double k_tip = test::ReferenceTipStiffness();
-  const double series = kCoupling * k_tip / (kCoupling + k_tip);
+  const double series = kProbeCoupling * k_tip / (kProbeCoupling + k_tip);
   for (int tick : {1500, 2500, 2999}) {
     const double depth = std::max(0.0, 1e-6 * (1e-3 * tick) - 2e-6);  // micro depth
     // Quasi-static: the probe descends 1 nm a tick, far slower than the beam's 14.5 us period.
@@ -70,7 +72,7 @@ TEST(HapticLoopTest, TheHandFeelsTheScaledSeriesSpringAndTheSameForcesEveryRun) 
 
 TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kRadius, kCoupling}, nullptr, nullptr);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
   HapticLoop<2> loop(beam, options);
   loop.StartPhysics();
@@ -108,7 +110,8 @@ TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   // The last command came from a local model at most a few ticks old: within 10 % of the force
   // at the stylus's final depth (the model is exact in depth; only its age differs).
   const double k_tip = test::ReferenceTipStiffness();
-  const double expected = 2e5 * kCoupling * k_tip / (kCoupling + k_tip) * (1e-6 * 2.99 - 2e-6);
+  const double expected =
+      2e5 * kProbeCoupling * k_tip / (kProbeCoupling + k_tip) * (1e-6 * 2.99 - 2e-6);
   EXPECT_NEAR(force, expected, 0.1 * expected);
 }
 

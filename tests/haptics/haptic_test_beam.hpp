@@ -25,6 +25,8 @@ inline double ReferenceTipStiffness() {
 /// 2 um below, and the Casimir force.
 using HapticSurface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
 constexpr double kHapticGap = 2e-6;
+/// The stylus's probe (radius as the beam is thick) and its coupling spring, N/m.
+constexpr double kProbeRadius = 2e-6, kProbeCoupling = 5.0;
 
 inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
   ContactOptions contact;

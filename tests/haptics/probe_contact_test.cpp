@@ -16,11 +16,14 @@
 namespace cosmems {
 namespace {
 
-constexpr double kThickness = 2e-6, kWidth = 20e-6, kRadius = 2e-6, kCoupling = 5.0;
-constexpr double kL = test::kReferenceLength;
+using test::kProbeCoupling;
+using test::kProbeRadius;
+using test::kReferenceLength;
+using test::kReferenceThickness;
+using test::kReferenceWidth;
 
 BeamModel<3> SpatialCantilever(DofNumbering numbering = DofNumbering::kByField) {
-  return BeamModel<3>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return BeamModel<3>(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                     test::ReferenceSection(), 20, 0),
                       numbering);
 }
@@ -56,7 +59,7 @@ Eigen::VectorXd SmoothState(const BeamModel<Dim>& model, Cubic uy, Cubic uz, dou
 
 TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
   const BeamModel<3> model = SpatialCantilever();
-  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<3> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Cubic uy{-20.0, 1e4}, uz{3.0, -2e3};
   const double strain = 1e-4;
   const Eigen::VectorXd d = SmoothState(model, uy, uz, strain);
@@ -66,12 +69,14 @@ TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
     ProbeFace face;
   };
   const Case cases[] = {
-      {{x, uy(x) + 0.5 * kThickness + kRadius - depth, 3e-6}, ProbeFace::kUpper},
-      {{x, uy(x) - 0.5 * kThickness - kRadius + depth, -4e-6}, ProbeFace::kLower},
-      {{x, uy(x), uz(x) + 0.5 * kWidth + kRadius - depth}, ProbeFace::kPositiveZ},
-      {{x, uy(x) + 0.2e-6, uz(x) - 0.5 * kWidth - kRadius + depth}, ProbeFace::kNegativeZ},
-      {{kL * (1 + strain) + kRadius - depth, uy(kL), 1e-6}, ProbeFace::kLastEnd},
-      {{-kRadius + depth, 0.0, 0.0}, ProbeFace::kFirstEnd},
+      {{x, uy(x) + 0.5 * kReferenceThickness + kProbeRadius - depth, 3e-6}, ProbeFace::kUpper},
+      {{x, uy(x) - 0.5 * kReferenceThickness - kProbeRadius + depth, -4e-6}, ProbeFace::kLower},
+      {{x, uy(x), uz(x) + 0.5 * kReferenceWidth + kProbeRadius - depth}, ProbeFace::kPositiveZ},
+      {{x, uy(x) + 0.2e-6, uz(x) - 0.5 * kReferenceWidth - kProbeRadius + depth},
+       ProbeFace::kNegativeZ},
+      {{kReferenceLength * (1 + strain) + kProbeRadius - depth, uy(kReferenceLength), 1e-6},
+       ProbeFace::kLastEnd},
+      {{-kProbeRadius + depth, 0.0, 0.0}, ProbeFace::kFirstEnd},
   };
   for (const Case& c : cases) {
     probe.MoveTo(c.centre);
@@ -81,34 +86,35 @@ TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
     // -z case sits 0.2 um off the section's centre: the side is taken unbounded in y.
     EXPECT_NEAR(touch.depth_m, depth, 1e-12) << c.centre.transpose();
     EXPECT_EQ(touch.normal, ProbeContact<3>::Normal(c.face));
-    EXPECT_NEAR(touch.force_n, kCoupling * depth, 1e-12 * kCoupling);
+    EXPECT_NEAR(touch.force_n, kProbeCoupling * depth, 1e-12 * kProbeCoupling);
   }
 }
 
 // The box at the section under the centre: 0 <= x <= L, |y - w(x_c)| <= t/2, |z| <= b/2.
 double DistanceToBox(const Eigen::Vector3d& p, double w) {
-  const Eigen::Vector3d low(0.0, w - 0.5 * kThickness, -0.5 * kWidth);
-  const Eigen::Vector3d high(kL, w + 0.5 * kThickness, 0.5 * kWidth);
+  const Eigen::Vector3d low(0.0, w - 0.5 * kReferenceThickness, -0.5 * kReferenceWidth);
+  const Eigen::Vector3d high(kReferenceLength, w + 0.5 * kReferenceThickness,
+                             0.5 * kReferenceWidth);
   return (p - p.cwiseMax(low).cwiseMin(high)).norm();
 }
 
 TEST(ProbeContactTest, ItTouchesExactlyWhenTheSphereMeetsTheBox) {
   const BeamModel<2> model = test::HapticCantilever();
-  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<2> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Cubic uy{-30.0, 5e3};
   const Eigen::VectorXd d = SmoothState(model, uy, {}, 0.0);
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> along(kL - 40e-6, kL + 3e-6), across(-13e-6, 13e-6),
-      height(-5e-6, 5e-6);
+  std::uniform_real_distribution<double> along(kReferenceLength - 40e-6, kReferenceLength + 3e-6),
+      across(-13e-6, 13e-6), height(-5e-6, 5e-6);
   int touching = 0, apart = 0;
   for (int i = 0; i < 20000; ++i) {
     const double x = along(random);
-    const Eigen::Vector3d p(x, uy(std::min(x, kL)) + height(random), across(random));
-    const double distance = DistanceToBox(p, uy(std::min(x, kL)));
-    if (std::abs(distance - kRadius) < 1e-12) continue;  // on the boundary: either is right
+    const Eigen::Vector3d p(x, uy(std::min(x, kReferenceLength)) + height(random), across(random));
+    const double distance = DistanceToBox(p, uy(std::min(x, kReferenceLength)));
+    if (std::abs(distance - kProbeRadius) < 1e-12) continue;  // on the boundary: either is right
     probe.MoveTo(p);
     const bool touches = probe.Touch(d).depth_m > 0.0;
-    EXPECT_EQ(touches, distance < kRadius) << p.transpose();
+    EXPECT_EQ(touches, distance < kProbeRadius) << p.transpose();
     (touches ? touching : apart) += 1;
   }
   EXPECT_GT(touching, 2000);  // both kinds well sampled
@@ -117,47 +123,49 @@ TEST(ProbeContactTest, ItTouchesExactlyWhenTheSphereMeetsTheBox) {
 
 TEST(ProbeContactTest, FromInsideItPushesOutThroughTheNearestFace) {
   const BeamModel<3> model = SpatialCantilever();
-  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<3> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
   probe.MoveTo(Eigen::Vector3d(100e-6, 0.2e-6, 9.5e-6));  // 0.5 um from the +z side, 0.8 the top
   ProbeTouch touch = probe.Touch(d);
   EXPECT_EQ(touch.face, ProbeFace::kPositiveZ);
-  EXPECT_NEAR(touch.depth_m, kRadius + 0.5e-6, 1e-15);
+  EXPECT_NEAR(touch.depth_m, kProbeRadius + 0.5e-6, 1e-15);
   probe.MoveTo(Eigen::Vector3d(100e-6, -0.7e-6, 2e-6));  // 0.3 um above the lower face
   touch = probe.Touch(d);
   EXPECT_EQ(touch.face, ProbeFace::kLower);
-  EXPECT_NEAR(touch.depth_m, kRadius + 0.3e-6, 1e-15);
+  EXPECT_NEAR(touch.depth_m, kProbeRadius + 0.3e-6, 1e-15);
 }
 
 // A hand pressing hard sinks the sphere past the beam's mid-plane, where the lower face overlaps
 // it less than the upper one: the face it came in by keeps pushing until its overlap ends.
 TEST(ProbeContactTest, PressedPastTheMidPlaneItPushesThroughTheFaceItCameIn) {
   const BeamModel<2> model = test::HapticCantilever();
-  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<2> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
   const Eigen::Vector3d below_mid(100e-6, -0.5e-6, 0.0);
   probe.MoveTo(below_mid);
   EXPECT_EQ(probe.Touch(d).face, ProbeFace::kLower);  // met there first: the least overlap
-  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kThickness + kRadius - 0.1e-6, 0.0));
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kReferenceThickness + kProbeRadius - 0.1e-6, 0.0));
   probe.Commit(d);
   probe.MoveTo(below_mid);
   ProbeTouch touch = probe.Touch(d);
   EXPECT_EQ(touch.face, ProbeFace::kUpper);
-  EXPECT_NEAR(touch.depth_m, 0.5 * kThickness + 0.5e-6 + kRadius, 1e-15);
+  EXPECT_NEAR(touch.depth_m, 0.5 * kReferenceThickness + 0.5e-6 + kProbeRadius, 1e-15);
   probe.Commit(d);
   // Through the beam and out below, the hand still feels the upper face: its overlap has not ended.
-  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kThickness - kRadius - 0.1e-6, 0.0));
+  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kReferenceThickness - kProbeRadius - 0.1e-6, 0.0));
   probe.Commit(d);
   EXPECT_EQ(probe.Touch(d).face, ProbeFace::kUpper);
-  EXPECT_NEAR(probe.Touch(d).depth_m, kThickness + 2 * kRadius + 0.1e-6, 1e-15);
-  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kThickness + kRadius + 0.1e-6, 0.0));  // lifted off
+  EXPECT_NEAR(probe.Touch(d).depth_m, kReferenceThickness + 2 * kProbeRadius + 0.1e-6, 1e-15);
+  probe.MoveTo(Eigen::Vector3d(100e-6, 0.5 * kReferenceThickness + kProbeRadius + 0.1e-6,
+                               0.0));  // lifted off
   probe.Commit(d);
-  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kThickness - kRadius + 0.1e-6, 0.0));  // in below
+  probe.MoveTo(Eigen::Vector3d(100e-6, -0.5 * kReferenceThickness - kProbeRadius + 0.1e-6,
+                               0.0));  // in below
   probe.Commit(d);
   probe.MoveTo(Eigen::Vector3d(100e-6, 0.5e-6, 0.0));  // and up past the mid-plane
   touch = probe.Touch(d);
   EXPECT_EQ(touch.face, ProbeFace::kLower);
-  EXPECT_NEAR(touch.depth_m, 0.5 * kThickness + 0.5e-6 + kRadius, 1e-15);
+  EXPECT_NEAR(touch.depth_m, 0.5 * kReferenceThickness + 0.5e-6 + kProbeRadius, 1e-15);
 }
 
 // The force's depth max(delta, 0) along a path in 1 nm steps: no step moves it by more than the
@@ -178,11 +186,12 @@ double LargestJump(ProbeContact<3>& probe, const Eigen::VectorXd& d, const Eigen
 
 TEST(ProbeContactTest, TheForceIsContinuousAroundTheEdges) {
   const BeamModel<3> model = SpatialCantilever();
-  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<3> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
-  const double top = 0.5 * kThickness, side = 0.5 * kWidth, step = 1e-9;
+  const double top = 0.5 * kReferenceThickness, side = 0.5 * kReferenceWidth, step = 1e-9;
   // Over the tip's upper edge, over the side's upper edge, down past the side.
-  EXPECT_LT(LargestJump(probe, d, {kL - 4e-6, top + 1e-6, 0.0}, {kL + 4e-6, top + 1e-6, 0.0}),
+  EXPECT_LT(LargestJump(probe, d, {kReferenceLength - 4e-6, top + 1e-6, 0.0},
+                        {kReferenceLength + 4e-6, top + 1e-6, 0.0}),
             1.8 * step);
   EXPECT_LT(
       LargestJump(probe, d, {100e-6, top + 1e-6, side - 4e-6}, {100e-6, top + 1e-6, side + 4e-6}),
@@ -231,27 +240,27 @@ struct FaceEnergy {
     const double xi = (x - model.NodeX()[e]) / (model.NodeX()[e + 1] - model.NodeX()[e]);
     const double twist =
         (1 - xi) * Value(d, e, NodalDof::kRx) + xi * Value(d, e + 1, NodalDof::kRx);
-    return w - twist * std::clamp(centre.z(), -0.5 * kWidth, 0.5 * kWidth);
+    return w - twist * std::clamp(centre.z(), -0.5 * kReferenceWidth, 0.5 * kReferenceWidth);
   }
   double operator()(const Eigen::VectorXd& d) const {
     const UnitSystem& unit = model.units();
     double delta = 0.0;  // m; the sphere is over the faces in these cases
     switch (face) {
       case ProbeFace::kUpper:
-        delta = FaceY(d) + 0.5 * kThickness - (centre.y() - kRadius);
+        delta = FaceY(d) + 0.5 * kReferenceThickness - (centre.y() - kProbeRadius);
         break;
       case ProbeFace::kLower:
-        delta = centre.y() + kRadius - (FaceY(d) - 0.5 * kThickness);
+        delta = centre.y() + kProbeRadius - (FaceY(d) - 0.5 * kReferenceThickness);
         break;
       case ProbeFace::kPositiveZ:
-        delta =
-            Field(d, NodalDof::kUz, NodalDof::kRy, -1.0) + 0.5 * kWidth - (centre.z() - kRadius);
+        delta = Field(d, NodalDof::kUz, NodalDof::kRy, -1.0) + 0.5 * kReferenceWidth -
+                (centre.z() - kProbeRadius);
         break;
       default:  // the tip's end
-        delta = kL + Value(d, model.ElementCount(), NodalDof::kUx) * unit.length -
-                (centre.x() - kRadius);
+        delta = kReferenceLength + Value(d, model.ElementCount(), NodalDof::kUx) * unit.length -
+                (centre.x() - kProbeRadius);
     }
-    const double k = kCoupling / (unit.force / unit.length);
+    const double k = kProbeCoupling / (unit.force / unit.length);
     const double depth = std::max(0.0, delta / unit.length);
     return 0.5 * k * depth * depth;
   }
@@ -259,15 +268,15 @@ struct FaceEnergy {
 
 TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergyOnEveryFace) {
   const BeamModel<3> model = SpatialCantilever();
-  ProbeContact<3> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<3> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
   for (int i = 0; i < d.size(); ++i) d[i] = -1e-4 * std::sin(0.3 * i);  // a wavy state
   const double x = 133e-6, depth = 0.2e-6;
   const FaceEnergy cases[] = {
-      {model, {x, 0.5 * kThickness + kRadius - depth, 1e-6}, ProbeFace::kUpper},
-      {model, {x, -0.5 * kThickness - kRadius + depth, 1e-6}, ProbeFace::kLower},
-      {model, {x, 0.0, 0.5 * kWidth + kRadius - depth}, ProbeFace::kPositiveZ},
-      {model, {kL + kRadius - depth, 0.0, 0.0}, ProbeFace::kLastEnd},
+      {model, {x, 0.5 * kReferenceThickness + kProbeRadius - depth, 1e-6}, ProbeFace::kUpper},
+      {model, {x, -0.5 * kReferenceThickness - kProbeRadius + depth, 1e-6}, ProbeFace::kLower},
+      {model, {x, 0.0, 0.5 * kReferenceWidth + kProbeRadius - depth}, ProbeFace::kPositiveZ},
+      {model, {kReferenceLength + kProbeRadius - depth, 0.0, 0.0}, ProbeFace::kLastEnd},
   };
   for (const FaceEnergy& energy : cases) {
     probe.MoveTo(energy.centre);
@@ -280,13 +289,18 @@ TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergyOnEveryFace) {
   }
   // Numbered node by node, a press off the axis twists the beam.
   const BeamModel<3> by_node = SpatialCantilever(DofNumbering::kByNode);
-  ProbeContact<3> twisting(by_node, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<3> twisting(by_node, ProbeOptions{kProbeRadius, kProbeCoupling});
   d.setZero(by_node.FreeDofCount());
   for (int i = 0; i < d.size(); ++i) d[i] = -1e-4 * std::sin(0.3 * i);
   for (const FaceEnergy& energy :
-       {FaceEnergy{by_node, {x, 0.5 * kThickness + kRadius - depth, 7e-6}, ProbeFace::kUpper, true},
-        FaceEnergy{
-            by_node, {x, -0.5 * kThickness - kRadius + depth, -6e-6}, ProbeFace::kLower, true}}) {
+       {FaceEnergy{by_node,
+                   {x, 0.5 * kReferenceThickness + kProbeRadius - depth, 7e-6},
+                   ProbeFace::kUpper,
+                   true},
+        FaceEnergy{by_node,
+                   {x, -0.5 * kReferenceThickness - kProbeRadius + depth, -6e-6},
+                   ProbeFace::kLower,
+                   true}}) {
     twisting.MoveTo(energy.centre);
     ASSERT_EQ(twisting.Touch(d).face, energy.face);
     test::ExpectForceAndTangentMatchDifferences(twisting, d, by_node.Stiffness().bandwidth(),
@@ -296,7 +310,7 @@ TEST(ProbeContactTest, ForceAndTangentMatchDifferencesOfTheEnergyOnEveryFace) {
 
 TEST(ProbeContactTest, BesideTheBeamOrLostItTouchesNothing) {
   const BeamModel<2> model = test::HapticCantilever();
-  ProbeContact<2> probe(model, ProbeOptions{kRadius, kCoupling});
+  ProbeContact<2> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
   const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
   Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
   ForceTangent tangent(static_cast<int>(d.size()), model.Stiffness().bandwidth());

@@ -13,21 +13,17 @@
 namespace cosmems {
 namespace {
 
-constexpr double kL = test::kReferenceLength;
-
-double ReferenceEi() {
-  return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ();
-}
+using test::kReferenceLength;
 
 // The exact first frequency of the reference cantilever (68.8 kHz), from cos x cosh x = -1.
 double ExactFirstFrequency() {
   const RectangularSection s = test::ReferenceSection();
-  return test::BendingFrequency(test::FrequencyRoot(1, -1.0), kL, ReferenceEi(),
+  return test::BendingFrequency(test::FrequencyRoot(1, -1.0), kReferenceLength, test::Eiz(),
                                 test::Silicon().density * s.Area());
 }
 
 CosseratRod ReferenceCantilever(int elements) {
-  return CosseratRod(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return CosseratRod(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                    test::ReferenceSection(), elements, 0));
 }
 
@@ -35,7 +31,8 @@ CosseratRod ReferenceCantilever(int elements) {
 RodState Deflected(const CosseratRod& rod, double alpha) {
   CosseratStaticSolver solver(rod);
   const Status status = solver.Solve(RodLoads::AtEnd(
-      rod.NodeCount(), Eigen::Vector3d(0.0, -alpha * ReferenceEi() / (kL * kL), 0.0),
+      rod.NodeCount(),
+      Eigen::Vector3d(0.0, -alpha * test::Eiz() / (kReferenceLength * kReferenceLength), 0.0),
       Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()));
   EXPECT_EQ(status, Status::kOk);
   return solver.state();
@@ -111,9 +108,10 @@ TEST(CosseratDynamicsTest, NumericalDampingDissipatesEnergy) {
 TEST(CosseratDynamicsTest, FailureIsReportedAndTheStateKept) {
   const CosseratRod rod = ReferenceCantilever(20);
   const RodLoads none = RodLoads::None(rod.NodeCount());
-  const RodLoads pull =
-      RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d(0.0, -ReferenceEi() / (kL * kL), 0.0),
-                      Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  const RodLoads pull = RodLoads::AtEnd(
+      rod.NodeCount(),
+      Eigen::Vector3d(0.0, -test::Eiz() / (kReferenceLength * kReferenceLength), 0.0),
+      Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
   NewtonOptions one_iteration = RodNewtonOptions();
   one_iteration.max_iterations = 1;
   one_iteration.max_cuts = 0;

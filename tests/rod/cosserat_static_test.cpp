@@ -12,27 +12,24 @@
 namespace cosmems {
 namespace {
 
-constexpr double kL = test::kReferenceLength;
-
-double ReferenceEi() {
-  return test::Silicon().young_modulus * test::ReferenceSection().SecondMomentZ();
-}
+using test::kReferenceLength;
 
 CosseratRod Cantilever(int elements, RodTheory theory = RodTheory::kSimoReissner,
                        double kirchhoff_factor = 1e2) {
   CosseratOptions options;
   options.theory = theory;
   options.kirchhoff_factor = kirchhoff_factor;
-  return CosseratRod(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return CosseratRod(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                    test::ReferenceSection(), elements, 0),
                      options);
 }
 
 // A dead tip force of alpha EI/L^2 down (-y).
 RodLoads DeadTipForce(const CosseratRod& rod, double alpha) {
-  return RodLoads::AtEnd(rod.NodeCount(),
-                         Eigen::Vector3d(0.0, -alpha * ReferenceEi() / (kL * kL), 0.0),
-                         Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
+  return RodLoads::AtEnd(
+      rod.NodeCount(),
+      Eigen::Vector3d(0.0, -alpha * test::Eiz() / (kReferenceLength * kReferenceLength), 0.0),
+      Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
 }
 
 // The elastica is inextensible and unshearable; the rod differs from it by the discretisation,
@@ -63,7 +60,7 @@ TEST_P(DeadTipLoadTest, FollowsTheElasticaUpToPl2OverEiOfTen) {
   for (double alpha : {0.5, 1.0, 2.0, 5.0, 10.0}) {
     CosseratStaticSolver solver(rod);
     ASSERT_EQ(solver.Solve(DeadTipForce(rod, alpha)), Status::kOk) << "alpha " << alpha;
-    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kL;
+    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kReferenceLength;
     const test::ElasticaTip exact = test::Elastica(alpha);
     const double tolerance = ElasticaTolerance(rod, alpha);
     EXPECT_NEAR(-tip.x(), exact.shortening, tolerance) << "alpha " << alpha;
@@ -85,7 +82,7 @@ TEST(CosseratStaticTest, ConvergesToTheElasticaAtSecondOrder) {
     const CosseratRod rod = Cantilever(elements, RodTheory::kKirchhoff);
     CosseratStaticSolver solver(rod);
     ASSERT_EQ(solver.Solve(DeadTipForce(rod, kAlpha)), Status::kOk);
-    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kL;
+    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kReferenceLength;
     const double error = std::hypot(-tip.x() - exact.shortening, -tip.y() - exact.deflection);
     if (previous > 0.0) {
       const double order = std::log2(previous / error);
@@ -102,9 +99,10 @@ TEST(CosseratStaticTest, FollowerForceNormalToTheTipFollowsItsElastica) {
     CosseratStaticSolver solver(rod);
     const RodLoads loads = RodLoads::AtEnd(
         rod.NodeCount(), Eigen::Vector3d::Zero(),
-        Eigen::Vector3d(0.0, -alpha * ReferenceEi() / (kL * kL), 0.0), Eigen::Vector3d::Zero());
+        Eigen::Vector3d(0.0, -alpha * test::Eiz() / (kReferenceLength * kReferenceLength), 0.0),
+        Eigen::Vector3d::Zero());
     ASSERT_EQ(solver.Solve(loads), Status::kOk) << "alpha " << alpha;
-    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kL;
+    const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kReferenceLength;
     const test::ElasticaTip exact = test::FollowerElastica(alpha);
     const double tolerance = ElasticaTolerance(rod, alpha);
     EXPECT_NEAR(-tip.x(), exact.shortening, tolerance) << "alpha " << alpha;
@@ -121,32 +119,32 @@ TEST(CosseratStaticTest, EndMomentRollsTheRodIntoACircleOfRadiusEiOverM) {
   constexpr double kChord = 1.5e-3;
   for (double turn : {0.25, 0.5, 1.0}) {
     const double angle = 2.0 * kPi * turn;  // M L / EI
-    const double moment = angle * ReferenceEi() / kL;
+    const double moment = angle * test::Eiz() / kReferenceLength;
     CosseratStaticSolver solver(rod);
     ASSERT_EQ(
         solver.Solve(RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d::Zero(),
                                      Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, moment))),
         Status::kOk)
         << "turn " << turn;
-    const double radius = ReferenceEi() / moment;
+    const double radius = test::Eiz() / moment;
     const Eigen::Matrix3Xd x = rod.NodePositions(solver.state());
     for (int i = 0; i < rod.NodeCount(); ++i) {
       const Eigen::Vector3d from_centre = x.col(i) - Eigen::Vector3d(0.0, radius, 0.0);
       EXPECT_NEAR(from_centre.norm() / radius, 1.0, kChord) << "node " << i;
-      EXPECT_NEAR(x(2, i), 0.0, 1e-12 * kL);
+      EXPECT_NEAR(x(2, i), 0.0, 1e-12 * kReferenceLength);
     }
     // The curvature psi/h is exact, so the rotation is M L / EI to round-off.
     EXPECT_NEAR(rod.TipRotation(solver.state()).z(), angle, 1e-9);
-    EXPECT_NEAR(rod.AxialForce(solver.state()), 0.0, 1e-9 * moment / kL);
+    EXPECT_NEAR(rod.AxialForce(solver.state()), 0.0, 1e-9 * moment / kReferenceLength);
   }
   // The full circle closes: the tip comes back to the root (a closed regular polygon).
   CosseratStaticSolver solver(rod);
-  ASSERT_EQ(solver.Solve(
-                RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                Eigen::Vector3d(0.0, 0.0, 2.0 * kPi * ReferenceEi() / kL))),
+  ASSERT_EQ(solver.Solve(RodLoads::AtEnd(
+                rod.NodeCount(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                Eigen::Vector3d(0.0, 0.0, 2.0 * kPi * test::Eiz() / kReferenceLength))),
             Status::kOk);
   const Eigen::Matrix3Xd x = rod.NodePositions(solver.state());
-  EXPECT_LT(x.col(rod.NodeCount() - 1).norm(), 1e-9 * kL);
+  EXPECT_LT(x.col(rod.NodeCount() - 1).norm(), 1e-9 * kReferenceLength);
 }
 
 TEST(CosseratStaticTest, SmallLoadsAgreeWithLinearBeamTheory) {
@@ -160,53 +158,57 @@ TEST(CosseratStaticTest, SmallLoadsAgreeWithLinearBeamTheory) {
     CosseratStaticSolver solver(rod);
     ASSERT_EQ(solver.Solve(DeadTipForce(rod, kAlpha)), Status::kOk);
     const double expected = kAlpha / 3.0 + kAlpha / e.force_stiffness.y();
-    EXPECT_NEAR(-rod.TipDisplacement(solver.state()).y() / kL, expected, kLinear * expected);
+    EXPECT_NEAR(-rod.TipDisplacement(solver.state()).y() / kReferenceLength, expected,
+                kLinear * expected);
     EXPECT_NEAR(-rod.TipRotation(solver.state()).z(), kAlpha / 2.0, kLinear * kAlpha / 2.0);
   }
   {  // Tip moment: rotation M L / EI, deflection M L^2 / 2EI.
     CosseratStaticSolver solver(rod);
-    const double moment = kAlpha * ReferenceEi() / kL;
+    const double moment = kAlpha * test::Eiz() / kReferenceLength;
     ASSERT_EQ(
         solver.Solve(RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d::Zero(),
                                      Eigen::Vector3d::Zero(), Eigen::Vector3d(0.0, 0.0, moment))),
         Status::kOk);
     EXPECT_NEAR(rod.TipRotation(solver.state()).z(), kAlpha, 1e-12);
-    EXPECT_NEAR(rod.TipDisplacement(solver.state()).y() / kL, kAlpha / 2.0, kLinear * kAlpha);
+    EXPECT_NEAR(rod.TipDisplacement(solver.state()).y() / kReferenceLength, kAlpha / 2.0,
+                kLinear * kAlpha);
   }
   {  // Axial tip force: N = P everywhere, elongation P L / EA.
     CosseratStaticSolver solver(rod);
-    const double force = 1e-3 * ReferenceEi() / (kL * kL);
+    const double force = 1e-3 * test::Eiz() / (kReferenceLength * kReferenceLength);
     ASSERT_EQ(solver.Solve(RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d(force, 0.0, 0.0),
                                            Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero())),
               Status::kOk);
     EXPECT_NEAR(rod.AxialForce(solver.state()), force, 1e-9 * force);
-    EXPECT_NEAR(rod.TipDisplacement(solver.state()).x() / kL, 1e-3 / e.force_stiffness.x(),
-                1e-9 * 1e-3 / e.force_stiffness.x());
+    EXPECT_NEAR(rod.TipDisplacement(solver.state()).x() / kReferenceLength,
+                1e-3 / e.force_stiffness.x(), 1e-9 * 1e-3 / e.force_stiffness.x());
   }
 }
 
 TEST(CosseratStaticTest, SmallMidspanLoadOnABridgeAgreesWithLinearTheory) {
-  const CosseratRod rod(
-      MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(), 50, 0));
+  const CosseratRod rod(MakeStructure(StructureKind::kBridge, kReferenceLength, test::Silicon(),
+                                      test::ReferenceSection(), 50, 0));
   const CosseratElement& e = rod.elements().front();
   constexpr double kAlpha = 1e-3;
   RodLoads loads = RodLoads::None(rod.NodeCount());
-  loads.dead_forces.col(25) = Eigen::Vector3d(0.0, -kAlpha * ReferenceEi() / (kL * kL), 0.0);
+  loads.dead_forces.col(25) =
+      Eigen::Vector3d(0.0, -kAlpha * test::Eiz() / (kReferenceLength * kReferenceLength), 0.0);
   CosseratStaticSolver solver(rod);
   ASSERT_EQ(solver.Solve(loads), Status::kOk);
   // P L^3 / 192 EI + P L / 4kGA. The one-point element's O(h^2) bending error is 1.6e-3 of it
   // at 50 elements (its constant is larger clamped-clamped than for the cantilever); the load's
   // stretching nonlinearity, (alpha/192)^2 EA relative to alpha, is 3e-6.
   const double expected = kAlpha / 192.0 + kAlpha / (4.0 * e.force_stiffness.y());
-  const Eigen::Vector3d mid = rod.DisplacementAt(solver.state(), 0.5 * kL) / kL;
+  const Eigen::Vector3d mid =
+      rod.DisplacementAt(solver.state(), 0.5 * kReferenceLength) / kReferenceLength;
   EXPECT_NEAR(-mid.y(), expected, 3e-3 * expected);
 }
 
 TEST(CosseratStaticTest, ResidualTensionStaysInABridgeAndStiffensIt) {
   constexpr double kX = 2.0;  // x = (L/4) sqrt(T/EI): a tension that halves the deflection
-  const double tension = 16.0 * kX * kX * ReferenceEi() / (kL * kL);
-  BeamDescription bridge =
-      MakeStructure(StructureKind::kBridge, kL, test::Silicon(), test::ReferenceSection(), 50, 0);
+  const double tension = 16.0 * kX * kX * test::Eiz() / (kReferenceLength * kReferenceLength);
+  BeamDescription bridge = MakeStructure(StructureKind::kBridge, kReferenceLength, test::Silicon(),
+                                         test::ReferenceSection(), 50, 0);
   bridge.axial_load = tension;
   const CosseratRod rod(bridge);
   CosseratStaticSolver solver(rod);
@@ -214,28 +216,31 @@ TEST(CosseratStaticTest, ResidualTensionStaysInABridgeAndStiffensIt) {
   ASSERT_EQ(solver.Solve(RodLoads::None(rod.NodeCount())), Status::kOk);
   EXPECT_NEAR(rod.AxialForce(solver.state()), tension, 1e-12 * tension);
   // A small midspan load P. On each half, EI w'''' = T w'' with w = w' = 0 at the clamp, w' = 0
-  // at midspan and the shear P/2 give w' = P/(2T) (1 - cosh kx + tanh(kL/4) sinh kx),
+  // at midspan and the shear P/2 give w' = P/(2T) (1 - cosh kx + tanh(kReferenceLength/4) sinh kx),
   // k^2 = T/EI, whose integral is delta = (P L / 4T) (1 - tanh(x)/x); shear adds P L / 4kGA.
   constexpr double kAlpha = 1e-3;
   RodLoads loads = RodLoads::None(rod.NodeCount());
-  loads.dead_forces.col(25) = Eigen::Vector3d(0.0, -kAlpha * ReferenceEi() / (kL * kL), 0.0);
+  loads.dead_forces.col(25) =
+      Eigen::Vector3d(0.0, -kAlpha * test::Eiz() / (kReferenceLength * kReferenceLength), 0.0);
   ASSERT_EQ(solver.Solve(loads), Status::kOk);
-  const double t = tension * kL * kL / ReferenceEi();  // internal units
+  const double t = tension * kReferenceLength * kReferenceLength / test::Eiz();  // internal units
   const double expected = kAlpha / (4.0 * t) * (1.0 - std::tanh(kX) / kX) +
                           kAlpha / (4.0 * rod.elements().front().force_stiffness.y());
   // The one-point element's O(h^2) error, larger with the tension (measured 2.5e-3 at 50
   // elements, 1.6e-3 without it).
-  EXPECT_NEAR(-rod.DisplacementAt(solver.state(), 0.5 * kL).y() / kL, expected, 4e-3 * expected);
+  EXPECT_NEAR(-rod.DisplacementAt(solver.state(), 0.5 * kReferenceLength).y() / kReferenceLength,
+              expected, 4e-3 * expected);
 
   // A cantilever cannot hold it: the free end pulls in by N0 L / EA and the force is gone.
-  BeamDescription cantilever = MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                             test::ReferenceSection(), 20, 0);
+  BeamDescription cantilever = MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                             test::Silicon(), test::ReferenceSection(), 20, 0);
   cantilever.axial_load = tension;
   const CosseratRod relaxed(cantilever);
   CosseratStaticSolver relaxing(relaxed);
   ASSERT_EQ(relaxing.Solve(RodLoads::None(relaxed.NodeCount())), Status::kOk);
   const double ea = relaxed.elements().front().force_stiffness.x();  // internal units
-  EXPECT_NEAR(relaxed.TipDisplacement(relaxing.state()).x() / kL, -t / ea, 1e-9 * t / ea);
+  EXPECT_NEAR(relaxed.TipDisplacement(relaxing.state()).x() / kReferenceLength, -t / ea,
+              1e-9 * t / ea);
   EXPECT_NEAR(relaxed.AxialForce(relaxing.state()), 0.0, 1e-9 * tension);
 }
 
@@ -245,8 +250,9 @@ TEST(CosseratStaticTest, LargeRotationsInThreeDimensionsConvergeAndStayUnit) {
   // Rolled three quarters of a turn about z, twisted by a moment about x and pushed out of
   // plane by a force along z, which the curl turns into torsion and bending about y: the tip
   // frame turns past pi about an axis that is none of the coordinate axes.
-  const Eigen::Vector3d moment(0.5 * gj / kL, 0.0, 1.5 * kPi * ReferenceEi() / kL);
-  const Eigen::Vector3d force(0.0, 0.0, 2.0 * ReferenceEi() / (kL * kL));
+  const Eigen::Vector3d moment(0.5 * gj / kReferenceLength, 0.0,
+                               1.5 * kPi * test::Eiz() / kReferenceLength);
+  const Eigen::Vector3d force(0.0, 0.0, 2.0 * test::Eiz() / (kReferenceLength * kReferenceLength));
   CosseratStaticSolver solver(rod);
   ASSERT_EQ(solver.Solve(RodLoads::AtEnd(rod.NodeCount(), force, Eigen::Vector3d::Zero(), moment)),
             Status::kOk);
@@ -258,7 +264,7 @@ TEST(CosseratStaticTest, LargeRotationsInThreeDimensionsConvergeAndStayUnit) {
   const Eigen::Vector3d tip_rotation = rod.TipRotation(s);
   EXPECT_GT(tip_rotation.norm(), kPi);
   EXPECT_GT(std::abs(tip_rotation.x()) + std::abs(tip_rotation.y()), 0.1);
-  EXPECT_GT(rod.TipDisplacement(s).z(), 0.1 * kL);
+  EXPECT_GT(rod.TipDisplacement(s).z(), 0.1 * kReferenceLength);
 
   // The same problem turned a quarter turn about x, with width and thickness exchanged, is the
   // same solution turned: frames, loads and supports are all consistent in 3-D.
@@ -272,7 +278,7 @@ TEST(CosseratStaticTest, LargeRotationsInThreeDimensionsConvergeAndStayUnit) {
             Status::kOk);
   const Eigen::Matrix3Xd expected = q * rod.NodePositions(s);
   EXPECT_LT((turned_rod.NodePositions(turned_solver.state()) - expected).norm(),
-            1e-8 * kL * std::sqrt(rod.NodeCount()));
+            1e-8 * kReferenceLength * std::sqrt(rod.NodeCount()));
 }
 
 TEST(CosseratStaticTest, PureTwistPastPiIsExact) {
@@ -280,9 +286,9 @@ TEST(CosseratStaticTest, PureTwistPastPiIsExact) {
   const double gj = test::Silicon().ShearModulus() * test::ReferenceSection().TorsionConstant();
   constexpr double kTwist = 3.0 * kPi;
   CosseratStaticSolver solver(rod);
-  ASSERT_EQ(solver.Solve(RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d::Zero(),
-                                         Eigen::Vector3d::Zero(),
-                                         Eigen::Vector3d(kTwist * gj / kL, 0.0, 0.0))),
+  ASSERT_EQ(solver.Solve(
+                RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                Eigen::Vector3d(kTwist * gj / kReferenceLength, 0.0, 0.0))),
             Status::kOk);
   // Uniform twist kappa_1 = M/GJ, reproduced exactly by the geodesic interpolation.
   EXPECT_LT((rod.TipRotation(solver.state()) - Eigen::Vector3d(kTwist, 0.0, 0.0)).norm(), 1e-9);
@@ -296,10 +302,10 @@ TEST(CosseratStaticTest, SameRelativeAnswerFromNanometresToMillimetres) {
     RectangularSection section = test::ReferenceSection();
     section.width *= scale;
     section.thickness *= scale;
-    const CosseratRod rod(
-        MakeStructure(StructureKind::kCantilever, kL * scale, test::Silicon(), section, 20, 0));
+    const CosseratRod rod(MakeStructure(StructureKind::kCantilever, kReferenceLength * scale,
+                                        test::Silicon(), section, 20, 0));
     const double ei = test::Silicon().young_modulus * section.SecondMomentZ();
-    const double l = kL * scale;
+    const double l = kReferenceLength * scale;
     CosseratStaticSolver solver(rod);
     ASSERT_EQ(solver.Solve(RodLoads::AtEnd(rod.NodeCount(),
                                            Eigen::Vector3d(0.0, -3.0 * ei / (l * l), 0.0),
@@ -338,7 +344,7 @@ TEST(CosseratStaticTest, KirchhoffLimitErrorFallsAsOneOverTheFactor) {
     const CosseratRod rod = Cantilever(20, RodTheory::kKirchhoff, factor);
     CosseratStaticSolver solver(rod);
     EXPECT_EQ(solver.Solve(DeadTipForce(rod, kAlpha)), Status::kOk) << factor;
-    return Eigen::Vector3d(rod.TipDisplacement(solver.state()) / kL);
+    return Eigen::Vector3d(rod.TipDisplacement(solver.state()) / kReferenceLength);
   };
   const Eigen::Vector3d x10 = tip(10.0);
   const Eigen::Vector3d x100 = tip(100.0);
@@ -356,8 +362,8 @@ TEST(CosseratStaticTest, KirchhoffLimitErrorFallsAsOneOverTheFactor) {
 }
 
 TEST(CosseratStaticTest, FailuresAreReportedAndTheStateKept) {
-  BeamDescription free_rod = MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                           test::ReferenceSection(), 10, 0);
+  BeamDescription free_rod = MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                           test::Silicon(), test::ReferenceSection(), 10, 0);
   free_rod.supports.front() = Support::kFree;
   const CosseratRod unsupported(free_rod);
   CosseratStaticSolver solver(unsupported);

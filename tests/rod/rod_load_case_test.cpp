@@ -12,14 +12,14 @@
 namespace cosmems {
 namespace {
 
-constexpr double kL = test::kReferenceLength;
+using test::kReferenceLength;
 
 // Unequal elements, so the lever rule and the half-lengths are not all alike.
 CosseratRod StepBeam() {
-  BeamDescription beam = MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
-                                       test::ReferenceSection(), 4, 0);
-  beam.elements[0].length = 0.1 * kL;
-  beam.elements[1].length = 0.4 * kL;
+  BeamDescription beam = MakeStructure(StructureKind::kCantilever, kReferenceLength,
+                                       test::Silicon(), test::ReferenceSection(), 4, 0);
+  beam.elements[0].length = 0.1 * kReferenceLength;
+  beam.elements[1].length = 0.4 * kReferenceLength;
   return CosseratRod(beam);
 }
 
@@ -35,16 +35,16 @@ Eigen::Vector3d MomentAboutRoot(const CosseratRod& rod, const RodLoads& loads) {
 }
 
 // Sums of a handful of terms of order qL: 1e-14 relative is round-off.
-constexpr double kRoundOff = 1e-14;
+using test::kRoundOff;
 
 TEST(RodLoadCaseTest, DistributedLoadKeepsItsResultantAndMoment) {
   const CosseratRod rod = StepBeam();
   LoadCase loads;
   loads.distributed = Eigen::Vector3d(0.5, -2.0, 1.0);
   const RodLoads nodal = RodLoadsFor(rod, loads);
-  const Eigen::Vector3d total = kL * loads.distributed;
+  const Eigen::Vector3d total = kReferenceLength * loads.distributed;
   EXPECT_TRUE(Resultant(nodal).isApprox(total, kRoundOff));
-  const Eigen::Vector3d moment = Eigen::Vector3d(0.5 * kL, 0, 0).cross(total);
+  const Eigen::Vector3d moment = Eigen::Vector3d(0.5 * kReferenceLength, 0, 0).cross(total);
   EXPECT_TRUE(MomentAboutRoot(rod, nodal).isApprox(moment, kRoundOff));
   // The node between the 0.1 L and 0.4 L elements carries half of each.
   EXPECT_TRUE(nodal.dead_forces.col(1).isApprox(0.25 * total, kRoundOff));
@@ -54,19 +54,21 @@ TEST(RodLoadCaseTest, PointForceSplitsByTheLeverRule) {
   const CosseratRod rod = StepBeam();
   LoadCase loads;
   const Eigen::Vector3d force(1e-6, -3e-6, 2e-6);
-  loads.points.push_back({0.2 * kL, force, Eigen::Vector3d::Zero()});  // a quarter into element 1
+  loads.points.push_back(
+      {0.2 * kReferenceLength, force, Eigen::Vector3d::Zero()});  // a quarter into element 1
   const RodLoads nodal = RodLoadsFor(rod, loads);
   EXPECT_TRUE(nodal.dead_forces.col(1).isApprox(0.75 * force, kRoundOff));
   EXPECT_TRUE(nodal.dead_forces.col(2).isApprox(0.25 * force, kRoundOff));
   EXPECT_TRUE(Resultant(nodal).isApprox(force, kRoundOff));
-  const Eigen::Vector3d moment = Eigen::Vector3d(0.2 * kL, 0, 0).cross(force);
+  const Eigen::Vector3d moment = Eigen::Vector3d(0.2 * kReferenceLength, 0, 0).cross(force);
   EXPECT_TRUE(MomentAboutRoot(rod, nodal).isApprox(moment, kRoundOff));
 }
 
 TEST(RodLoadCaseTest, TipLoadsGoToTheLastNodeAndItsMoment) {
   const CosseratRod rod = StepBeam();
   LoadCase loads;
-  loads.points.push_back({kL, Eigen::Vector3d(0, -1e-6, 0), Eigen::Vector3d(0, 0, 2e-12)});
+  loads.points.push_back(
+      {kReferenceLength, Eigen::Vector3d(0, -1e-6, 0), Eigen::Vector3d(0, 0, 2e-12)});
   const RodLoads nodal = RodLoadsFor(rod, loads);
   // The element lengths sum to L within round-off, which is all that leaks to the next node.
   EXPECT_TRUE(nodal.dead_forces.col(4).isApprox(Eigen::Vector3d(0, -1e-6, 0), kRoundOff));
@@ -78,7 +80,8 @@ TEST(RodLoadCaseTest, TipLoadsGoToTheLastNodeAndItsMoment) {
 TEST(RodLoadCaseTest, RefusesWhatTheRodCannotCarry) {
   const CosseratRod rod = StepBeam();
   LoadCase inside;
-  inside.points.push_back({0.5 * kL, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1e-12)});
+  inside.points.push_back(
+      {0.5 * kReferenceLength, Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0, 1e-12)});
   EXPECT_THROW(
       {
         try {
@@ -92,7 +95,8 @@ TEST(RodLoadCaseTest, RefusesWhatTheRodCannotCarry) {
       },
       std::invalid_argument);
   LoadCase outside;
-  outside.points.push_back({1.5 * kL, Eigen::Vector3d(0, 1, 0), Eigen::Vector3d::Zero()});
+  outside.points.push_back(
+      {1.5 * kReferenceLength, Eigen::Vector3d(0, 1, 0), Eigen::Vector3d::Zero()});
   EXPECT_THROW(RodLoadsFor(rod, outside), std::invalid_argument);
   LoadCase nan;
   nan.distributed.y() = std::nan("");

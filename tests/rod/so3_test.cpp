@@ -5,11 +5,13 @@
 #include <Eigen/Geometry>
 #include <random>
 
+#include "test_beams.hpp"
+
 namespace cosmems {
 namespace {
 
 // Round-off of a few quaternion products and trigonometric calls.
-constexpr double kRoundOff = 1e-14;
+using test::kRoundOff;
 
 Eigen::Vector3d RandomUnit(std::mt19937& rng) {
   std::normal_distribution<double> normal;

@@ -14,7 +14,7 @@
 namespace cosmems {
 namespace {
 
-constexpr double kGap = 2e-6;
+using test::kReferenceGap;
 
 BeamModel<2> Cantilever(double length, int elements, int order = 0) {
   return BeamModel<2>(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
@@ -41,10 +41,10 @@ TEST(ContactTest, PressedCantileverRestsOnItsTipWithinTheTolerance) {
   const double length = test::kReferenceLength;
   const BeamModel<2> model = Cantilever(length, 20);
   ContactOptions options;
-  options.gap = kGap;
-  options.tolerance = 1e-9 * kGap;
+  options.gap = kReferenceGap;
+  options.tolerance = 1e-9 * kReferenceGap;
   SubstrateContact<2> contact(model, options);
-  const double closing = 3.0 * BendingStiffness() * kGap / std::pow(length, 3);
+  const double closing = 3.0 * BendingStiffness() * kReferenceGap / std::pow(length, 3);
   const NonlinearStaticSolution solution =
       SolveNonlinearStatic(model, contact, TipForce(length, -3.0 * closing));
   ASSERT_EQ(solution.status, Status::kOk);
@@ -52,8 +52,8 @@ TEST(ContactTest, PressedCantileverRestsOnItsTipWithinTheTolerance) {
   EXPECT_LE(contact.Penetration(d), options.tolerance);
   const int tip = model.dofs().Reduced(20, NodalDof::kUy);
   const int mid = model.dofs().Reduced(10, NodalDof::kUy);
-  EXPECT_NEAR(d[tip] * model.units().length, -kGap, 1e-9 * kGap);
-  EXPECT_NEAR(d[mid] * model.units().length, -5.0 / 16.0 * kGap, 2e-9 * kGap);
+  EXPECT_NEAR(d[tip] * model.units().length, -kReferenceGap, 1e-9 * kReferenceGap);
+  EXPECT_NEAR(d[mid] * model.units().length, -5.0 / 16.0 * kReferenceGap, 2e-9 * kReferenceGap);
   const ContactSummary summary = contact.Summary();
   EXPECT_EQ(summary.state, ContactState::kContact);
   EXPECT_NEAR(summary.detached_length_m, length, 1e-12);
@@ -67,12 +67,12 @@ TEST(ContactTest, DistributedLoadLaysTheBeamDownWithoutPenetration) {
   const double length = test::kReferenceLength;
   const BeamModel<2> model = Cantilever(length, 40);
   ContactOptions options;
-  options.gap = kGap;
+  options.gap = kReferenceGap;
   SubstrateContact<2> contact(model, options);
   // 8 EI g / L^4 bends the free tip to the gap; 200 times that presses most of the beam down.
   LoadCase loads;
-  loads.distributed =
-      Eigen::Vector3d(0, -200.0 * 8.0 * BendingStiffness() * kGap / std::pow(length, 4), 0);
+  loads.distributed = Eigen::Vector3d(
+      0, -200.0 * 8.0 * BendingStiffness() * kReferenceGap / std::pow(length, 4), 0);
   const NonlinearStaticSolution solution = SolveNonlinearStatic(model, contact, loads);
   ASSERT_EQ(solution.status, Status::kOk);
   EXPECT_LE(contact.Penetration(solution.displacement), contact.tolerance());
@@ -85,13 +85,13 @@ TEST(ContactTest, DistributedLoadLaysTheBeamDownWithoutPenetration) {
 TEST(ContactTest, TangentMatchesDifferencesOfThePenaltyEnergy) {
   const BeamModel<2> model = Cantilever(test::kReferenceLength, 6);
   ContactOptions options;
-  options.gap = kGap;
+  options.gap = kReferenceGap;
   options.penalty = 100.0;
   SubstrateContact<2> contact(model, options);
   const int n = model.FreeDofCount();
   // Half the nodes well through the plane, half well above it: away from the kink at g = 0.
   Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-  const double gap = kGap / model.units().length;
+  const double gap = kReferenceGap / model.units().length;
   for (int node = 1; node <= 6; ++node) {
     d[model.dofs().Reduced(node, NodalDof::kUy)] = node % 2 ? -1.5 * gap : -0.5 * gap;
   }
@@ -124,7 +124,7 @@ double StuckSpan(double gamma, double height) {
 
 ContactSummary Release(const BeamModel<2>& model, double gamma) {
   ContactOptions options;
-  options.gap = kGap;
+  options.gap = kReferenceGap;
   options.stiction = true;
   options.adhesion_energy = gamma;
   SubstrateContact<2> contact(model, options);
@@ -140,7 +140,7 @@ ContactSummary Release(const BeamModel<2>& model, double gamma) {
 // and 200 elements, and closer as they refine.
 TEST(StictionTest, StuckCantileverFreeSpanMatchesTheEnergyReleaseRateBalance) {
   const double length = 400e-6, gamma = 0.02;
-  const double exact = StuckSpan(gamma, kGap);  // 142 um
+  const double exact = StuckSpan(gamma, kReferenceGap);  // 142 um
   double previous = std::numeric_limits<double>::infinity();
   for (int elements : {50, 100, 200}) {
     const ContactSummary summary = Release(Cantilever(length, elements), gamma);
@@ -156,7 +156,7 @@ TEST(StictionTest, StuckCantileverFreeSpanMatchesTheEnergyReleaseRateBalance) {
 
 TEST(StictionTest, ShortCantileverSpringsFreeAndLongOneStaysStuck) {
   const double gamma = 0.02;
-  const double span = StuckSpan(gamma, kGap);
+  const double span = StuckSpan(gamma, kReferenceGap);
   const ContactSummary short_beam = Release(Cantilever(0.8 * span, 40), gamma);
   EXPECT_EQ(short_beam.state, ContactState::kFree);
   EXPECT_NEAR(short_beam.detached_length_m, 0.8 * span, 1e-12);
@@ -173,7 +173,7 @@ TEST(StictionTest, ShortCantileverSpringsFreeAndLongOneStaysStuck) {
 TEST(ContactTest, ImpactAtOneMeterPerSecondKeepsPenetrationAndGainsNoEnergy) {
   const BeamModel<2> model = Cantilever(test::kReferenceLength, 20);
   ContactOptions options;
-  options.gap = kGap;
+  options.gap = kReferenceGap;
   SubstrateContact<2> contact(model, options);
   const UnitSystem& u = model.units();
   const SymmetricBandMatrix& m = model.Mass(0);

@@ -13,10 +13,10 @@
 namespace cosmems {
 namespace {
 
-constexpr double kStiffness = 1.0;  // N/m
-constexpr double kMass = 1e-10;     // kg
-constexpr double kArea = 1e-8;      // m^2
-constexpr double kGap = 1e-6;       // m
+constexpr double kStiffness = 1.0;   // N/m
+constexpr double kMass = 1e-10;      // kg
+constexpr double kArea = 1e-8;       // m^2
+constexpr double kPullInGap = 1e-6;  // m
 
 // The plate's electrostatic force as the one unknown's nonlinear force (toward the substrate,
 // x < 0), from the library's pressure.
@@ -24,7 +24,7 @@ class PlateForce final : public NonlinearForce {
  public:
   explicit PlateForce(double voltage) : pressure_{voltage, 1.0, false} {}
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
-    const double gap = kGap + d[0];
+    const double gap = kPullInGap + d[0];
     if (!(gap > 0.0)) return false;
     force[0] += kArea * pressure_.Value(gap);
     tangent.band().Add(0, 0, kArea * pressure_.Slope(gap));
@@ -36,7 +36,8 @@ class PlateForce final : public NonlinearForce {
 };
 
 double StaticPullIn() {
-  return std::sqrt(8.0 * kStiffness * std::pow(kGap, 3) / (27.0 * kVacuumPermittivity * kArea));
+  return std::sqrt(8.0 * kStiffness * std::pow(kPullInGap, 3) /
+                   (27.0 * kVacuumPermittivity * kArea));
 }
 
 // Whether the plate, released at rest under `voltage`, stays off the substrate for four periods
@@ -53,7 +54,7 @@ bool Holds(double voltage) {
   if (integrator.Initialize(zero, zero, zero) != Status::kOk) return false;
   for (int step = 0; step < 16000; ++step) {
     if (integrator.Step(zero) != Status::kOk) return false;
-    if (integrator.displacement()[0] < -0.9 * kGap) return false;
+    if (integrator.displacement()[0] < -0.9 * kPullInGap) return false;
   }
   return true;
 }

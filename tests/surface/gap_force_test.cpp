@@ -17,12 +17,12 @@
 namespace cosmems {
 namespace {
 
-constexpr double kL = test::kReferenceLength;
-constexpr double kGap = 2e-6;
-constexpr double kWidth = 20e-6;
+using test::kReferenceGap;
+using test::kReferenceLength;
+using test::kReferenceWidth;
 
 BeamModel<2> Cantilever(int elements) {
-  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                     test::ReferenceSection(), elements, 1));
 }
 
@@ -30,11 +30,11 @@ BeamModel<2> Cantilever(int elements) {
 // gap (internal units).
 Eigen::VectorXd Bent(const BeamModel<2>& model, double travel) {
   LoadCase loads;
-  loads.points.push_back({kL, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back({kReferenceLength, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
   const Eigen::VectorXd f = AssembleLoads(model, loads);
   Eigen::VectorXd d = model.Stiffness().ToDense().llt().solve(f);
   const double tip = d[model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy)];
-  return d * (-travel * kGap / model.units().length / tip);
+  return d * (-travel * kReferenceGap / model.units().length / tip);
 }
 
 // The potential Phi(d) with Phi' = p of each law (zero at infinite gap), SI.
@@ -65,8 +65,8 @@ double Energy(const BeamModel<2>& model, const Pressure& pressure, const Eigen::
         if (rz >= 0) w += h * s.bending[2 * node + 1] * d[rz];
       }
       const double weight = (i == 0 || i == intervals) ? 1 : (i % 2 ? 4 : 2);
-      energy += weight * h / (3.0 * intervals) * kWidth * Potential(pressure, kGap + w * u.length) /
-                (u.ForcePerLength() * u.length);
+      energy += weight * h / (3.0 * intervals) * kReferenceWidth *
+                Potential(pressure, kReferenceGap + w * u.length) / (u.ForcePerLength() * u.length);
     }
   }
   return energy;
@@ -87,7 +87,7 @@ TEST(GaussLegendreTest, IntegratesPolynomialsOfDegreeTwoNMinusOneExactly) {
 template <typename Pressure>
 void ExpectConsistent(const Pressure& pressure) {
   const BeamModel<2> model = Cantilever(6);
-  GapForce<2, Pressure> force(model, pressure, {kGap, 0.0, kL, 8});
+  GapForce<2, Pressure> force(model, pressure, {kReferenceGap, 0.0, kReferenceLength, 8});
   const Eigen::VectorXd d = Bent(model, 0.5);
   // Central differences at 1e-6 of the deflection: truncation ~1e-12 of these smooth functions,
   // round-off ~1e-10; the Simpson energy is exact to ~1e-13 and the 8-point rule to ~1e-12 at
@@ -98,7 +98,7 @@ void ExpectConsistent(const Pressure& pressure) {
 }
 
 TEST(GapForceTest, ElectrostaticForceAndTangentMatchFiniteDifferencesOfTheEnergy) {
-  ExpectConsistent(ElectrostaticPressure{10.0, kWidth, false});
+  ExpectConsistent(ElectrostaticPressure{10.0, kReferenceWidth, false});
 }
 
 TEST(GapForceTest, CasimirForceAndTangentMatchFiniteDifferencesOfTheEnergy) {
@@ -110,15 +110,16 @@ TEST(GapForceTest, CasimirForceAndTangentMatchFiniteDifferencesOfTheEnergy) {
 // the cubic shape functions times a constant.
 TEST(GapForceTest, UndeformedBeamFeelsTheUniformPressure) {
   const BeamModel<2> model = Cantilever(5);
-  const ElectrostaticPressure pressure{20.0, kWidth, true};
-  GapForce<2, ElectrostaticPressure> force(model, pressure, {kGap, 0.0, kL, 2});
+  const ElectrostaticPressure pressure{20.0, kReferenceWidth, true};
+  GapForce<2, ElectrostaticPressure> force(model, pressure,
+                                           {kReferenceGap, 0.0, kReferenceLength, 2});
   const int n = model.FreeDofCount();
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   ForceTangent tangent(n, model.Stiffness().bandwidth());
   tangent.Clear();
   ASSERT_TRUE(force.Evaluate(Eigen::VectorXd::Zero(n), r, tangent));
   LoadCase loads;
-  loads.distributed = Eigen::Vector3d(0, -pressure.Value(kGap) * kWidth, 0);
+  loads.distributed = Eigen::Vector3d(0, -pressure.Value(kReferenceGap) * kReferenceWidth, 0);
   const Eigen::VectorXd f = AssembleLoads(model, loads);
   EXPECT_LT((r + f).norm(), 1e-13 * f.norm());
 }
@@ -127,8 +128,8 @@ TEST(GapForceTest, UndeformedBeamFeelsTheUniformPressure) {
 // in proportion to its covered part, and the total equals p b times the electrode's length.
 TEST(GapForceTest, PartialElectrodeLoadsOnlyWhatItCovers) {
   const BeamModel<2> model = Cantilever(4);  // elements of 50 um
-  const ElectrostaticPressure pressure{5.0, kWidth, false};
-  GapForce<2, ElectrostaticPressure> force(model, pressure, {kGap, 120e-6, 200e-6, 4});
+  const ElectrostaticPressure pressure{5.0, kReferenceWidth, false};
+  GapForce<2, ElectrostaticPressure> force(model, pressure, {kReferenceGap, 120e-6, 200e-6, 4});
   const int n = model.FreeDofCount();
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   ForceTangent tangent(n, model.Stiffness().bandwidth());
@@ -142,15 +143,16 @@ TEST(GapForceTest, PartialElectrodeLoadsOnlyWhatItCovers) {
     }
   }
   const UnitSystem& u = model.units();
-  EXPECT_NEAR(total * u.force, pressure.Value(kGap) * kWidth * 80e-6,
-              1e-13 * pressure.Value(kGap) * kWidth * 80e-6);
+  EXPECT_NEAR(total * u.force, pressure.Value(kReferenceGap) * kReferenceWidth * 80e-6,
+              1e-13 * pressure.Value(kReferenceGap) * kReferenceWidth * 80e-6);
 }
 
 // Near the substrate the pressure varies over d / |w'|, far less than an element: Casimir (1/d^4,
 // the steepest law) on 10 elements with the tip at 50 %, 99 % and 99.99 % of the gap, the tip
 // node's force against a reference of 16 points on intervals of gap ratio 1.05.
 double TipForce(const BeamModel<2>& model, const Eigen::VectorXd& d, int points, double ratio) {
-  GapForce<2, CasimirPressure> force(model, {}, {kGap, 0.0, kL, points, ratio});
+  GapForce<2, CasimirPressure> force(model, {},
+                                     {kReferenceGap, 0.0, kReferenceLength, points, ratio});
   const int n = model.FreeDofCount();
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   ForceTangent tangent(n, model.Stiffness().bandwidth());
@@ -193,7 +195,7 @@ TEST(GapForceTest, QuadratureResolvesTheForceNearTheSubstrate) {
 
 TEST(GapForceTest, AClosedGapIsOutsideTheDomain) {
   const BeamModel<2> model = Cantilever(4);
-  GapForce<2, CasimirPressure> force(model, {}, {kGap, 0.0, kL, 4});
+  GapForce<2, CasimirPressure> force(model, {}, {kReferenceGap, 0.0, kReferenceLength, 4});
   const int n = model.FreeDofCount();
   Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
   ForceTangent tangent(n, model.Stiffness().bandwidth());

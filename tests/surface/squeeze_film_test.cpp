@@ -17,12 +17,14 @@
 namespace cosmems {
 namespace {
 
-constexpr double kL = test::kReferenceLength;
-constexpr double kGap = 2e-6, kWidth = 20e-6, kThickness = 2e-6;
+using test::kReferenceGap;
+using test::kReferenceLength;
+using test::kReferenceThickness;
+using test::kReferenceWidth;
 constexpr double kAir = 1.81e-5;  // Pa s
 
 BeamModel<2> Cantilever() {
-  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kL, test::Silicon(),
+  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kReferenceLength, test::Silicon(),
                                     test::ReferenceSection(), 20, 0));
 }
 
@@ -35,10 +37,11 @@ Eigen::VectorXd Parabola(const BeamModel<2>& model) {
     const double x = model.NodeX()[k] * u.length;
     const int node = static_cast<int>(k);
     if (const int r = model.dofs().Reduced(node, NodalDof::kUy); r >= 0) {
-      v[r] = x * x / (kL * kL) / speed;
+      v[r] = x * x / (kReferenceLength * kReferenceLength) / speed;
     }
     if (const int r = model.dofs().Reduced(node, NodalDof::kRz); r >= 0) {
-      v[r] = 2 * x / (kL * kL) / speed * u.length;  // d(v_y)/dx in internal units
+      v[r] = 2 * x / (kReferenceLength * kReferenceLength) / speed *
+             u.length;  // d(v_y)/dx in internal units
     }
   }
   return v;
@@ -60,14 +63,15 @@ TEST(SqueezeFilmTest, TheFilmTakesThePowerOfReynoldsLongStrip) {
   const Eigen::VectorXd v = Parabola(model);
   // int_0^L c (x^2/L^2)^2 dx = c L / 5, c = mu b^3 / g^3: the Hermite cubics hold x^2 and four
   // Gauss points integrate its square exactly, so only round-off remains (1e-12).
-  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 0.0}, kGap);
-  const double c = kAir * std::pow(kWidth / kGap, 3);
-  EXPECT_NEAR(Power(film, model, v), c * kL / 5.0, 1e-12 * c * kL);
+  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 0.0}, kReferenceGap);
+  const double c = kAir * std::pow(kReferenceWidth / kReferenceGap, 3);
+  EXPECT_NEAR(Power(film, model, v), c * kReferenceLength / 5.0, 1e-12 * c * kReferenceLength);
   // Rarefied air (68 nm at 1 atm): mu / (1 + 9.638 Kn^1.159), Kn = 0.034, 0.192 of the damping
   // lost to slip.
-  SqueezeFilm<2> rarefied(model, SqueezeFilmOptions{kAir, 68e-9}, kGap);
-  const double slip = 1.0 + 9.638 * std::pow(68e-9 / kGap, 1.159);
-  EXPECT_NEAR(Power(rarefied, model, v), c / slip * kL / 5.0, 1e-12 * c * kL);
+  SqueezeFilm<2> rarefied(model, SqueezeFilmOptions{kAir, 68e-9}, kReferenceGap);
+  const double slip = 1.0 + 9.638 * std::pow(68e-9 / kReferenceGap, 1.159);
+  EXPECT_NEAR(Power(rarefied, model, v), c / slip * kReferenceLength / 5.0,
+              1e-12 * c * kReferenceLength);
 }
 
 TEST(SqueezeFilmTest, TangentsMatchDifferencesOfTheForce) {
@@ -75,12 +79,12 @@ TEST(SqueezeFilmTest, TangentsMatchDifferencesOfTheForce) {
   const int n = model.FreeDofCount();
   // Bent toward the substrate like a tip load, the tip at 60 % of the gap, moving in a wave.
   LoadCase loads;
-  loads.points.push_back({kL, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back({kReferenceLength, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
   Eigen::VectorXd d = model.Stiffness().ToDense().llt().solve(AssembleLoads(model, loads));
-  d *= 0.6 * kGap / model.units().length / -d[model.dofs().Reduced(20, NodalDof::kUy)];
+  d *= 0.6 * kReferenceGap / model.units().length / -d[model.dofs().Reduced(20, NodalDof::kUy)];
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i) v[i] = 1e-3 * std::sin(0.7 * i + 0.2);
-  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 68e-9}, kGap);
+  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 68e-9}, kReferenceGap);
   auto force = [&](const Eigen::VectorXd& dd, const Eigen::VectorXd& vv, double factor,
                    ForceTangent& tangent) {
     Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
@@ -121,14 +125,15 @@ TEST(SqueezeFilmTest, SmallMotionDecaysAsTheMassProportionalDampingItReducesTo) 
   const int n = model.FreeDofCount();
   const int tip = model.dofs().Reduced(20, NodalDof::kUy);
   LoadCase loads;
-  loads.points.push_back({kL, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
+  loads.points.push_back({kReferenceLength, Eigen::Vector3d(0, -1.0, 0), Eigen::Vector3d::Zero()});
   Eigen::VectorXd d0 = model.Stiffness().ToDense().llt().solve(AssembleLoads(model, loads));
-  d0 *= 1e-5 * kGap / u.length / -d0[tip];  // the tip 1e-5 of the gap down, let go
-  const double c = kAir * std::pow(kWidth / kGap, 3);
-  const double alpha = c / (test::Silicon().density * kWidth * kThickness);  // 1/s
+  d0 *= 1e-5 * kReferenceGap / u.length / -d0[tip];  // the tip 1e-5 of the gap down, let go
+  const double c = kAir * std::pow(kReferenceWidth / kReferenceGap, 3);
+  const double alpha =
+      c / (test::Silicon().density * kReferenceWidth * kReferenceThickness);  // 1/s
   const double period = 14.5e-6, dt = period / 50 / u.time;
   const auto parameters = GeneralizedAlphaParameters::Newmark(0.25, 0.5);
-  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 0.0}, kGap);
+  SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 0.0}, kReferenceGap);
   NonlinearNewmarkIntegrator with_film(model.Mass(0), model.Stiffness(), {}, film, parameters, dt);
   LinearNewmarkIntegrator rayleigh(model.Mass(0), model.Stiffness(),
                                    RayleighDamping{alpha * u.time, 0.0}, parameters, dt);
