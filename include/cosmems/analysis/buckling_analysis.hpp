@@ -44,8 +44,13 @@ BucklingResult SolveBuckling(const BeamModel<Dim>& model, const BucklingOptions&
   const SymmetricBandMatrix& k = model.ElasticStiffness();
   const SymmetricBandMatrix& g = model.Geometric(0);
   const int n = model.FreeDofCount();
-  const int p = std::min(options.count, n);
-  const int q = std::min(n, std::max(2 * p, p + 8));
+  // K_L^-1 G_0 X has no larger rank than the degrees of freedom G_0 acts on: a subspace wider
+  // than that (all 3 unknowns of a 1-element cantilever, 2 of them bending) leaves the projected
+  // K_L singular.
+  int bending = 0;
+  for (int i = 0; i < n; ++i) bending += g(i, i) != 0.0;
+  const int p = std::min(options.count, bending);
+  const int q = std::min(bending, std::max(2 * p, p + 8));
   if (p <= 0) return result;
   const BandCholesky cholesky(k);
   result.status = cholesky.info();

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/fold_search.hpp"
@@ -69,12 +70,19 @@ class FoldPath {
     d_ = accepted_ + (s - s_) * rate_;
     lambda_ = accepted_lambda_ + (s - s_) * accepted_slope_;
     const double target = -s * gap_;
+    double previous = std::numeric_limits<double>::infinity();
     for (int iteration = 0;; ++iteration) {
       double reference = 0.0;
       if (!Evaluate(reference)) return Status::kNonFinite;
       const double c = control_.Evaluate(d_) - target;
-      const bool converged = residual_.norm() <= newton_.residual_tolerance * reference &&
-                             std::abs(c) <= newton_.residual_tolerance * gap_;
+      // A residual that has stopped falling within the rounding error of K d has converged: on
+      // a fine mesh that floor lies above the tolerance (SymmetricBandMatrix::ProductRoundOff).
+      const double norm = residual_.norm();
+      const bool converged =
+          (norm <= newton_.residual_tolerance * reference ||
+           (norm >= 0.5 * previous && norm <= model_.Stiffness().ProductRoundOff(d_, a_))) &&
+          std::abs(c) <= newton_.residual_tolerance * gap_;
+      previous = norm;
       const Status factored = Factor();
       if (factored != Status::kOk) return factored;
       b_ = r1_;

@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "cosmems/linalg/band_kernels.hpp"
@@ -66,6 +68,31 @@ class SymmetricBandMatrix {
       }
       y[j] += alpha * sum;
     }
+  }
+
+  /// A bound on the rounding error of a computed A x (2-norm): each of its entries sums at most
+  /// m = 2 bandwidth + 1 products, so it errs by at most gamma_m = m u / (1 - m u) times the
+  /// same entry of |A| |x| (u = eps / 2; Higham, Accuracy and Stability of Numerical
+  /// Algorithms, 3.5). A residual that holds A x cannot be formed more accurately than this:
+  /// for a smooth x on a fine mesh A x is a small difference of large products (the fourth
+  /// difference of a beam's stiffness), and the bound passes any fixed relative tolerance on A x.
+  /// `work` (size()) is overwritten; allocates nothing.
+  double ProductRoundOff(const Eigen::Ref<const Eigen::VectorXd>& x,
+                         Eigen::Ref<Eigen::VectorXd> work) const {
+    work.setZero();
+    for (int j = 0; j < size_; ++j) {
+      const double xj = std::abs(x[j]);
+      double sum = std::abs(data_(0, j)) * xj;
+      const int last = std::min(size_ - 1, j + bandwidth_);
+      for (int i = j + 1; i <= last; ++i) {
+        const double a = std::abs(data_(i - j, j));
+        work[i] += a * xj;
+        sum += a * std::abs(x[i]);
+      }
+      work[j] += sum;
+    }
+    const double mu = (2 * bandwidth_ + 1) * 0.5 * std::numeric_limits<double>::epsilon();
+    return mu / (1.0 - mu) * work.norm();
   }
 
   Eigen::VectorXd operator*(const Eigen::VectorXd& x) const {
