@@ -36,11 +36,8 @@ TEST(HapticPassivityTest, AHandHeldAgainstTheSubstrateGainsNoEnergyOver10Seconds
   HapticBeam<2> beam(model, ProbeOptions{2e-6, coupling}, &forces, &forces.get<0>());
   const DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
   HapticLoopOptions options;
-  options.scaling.position_scale = 5000.0;
   // The coupling felt at half the device's renderable stiffness (350 N/m): the stiff contact.
-  options.scaling.force_scale = 0.5 * specs.max_stiffness_n_per_m * 5000.0 / coupling;
-  // Micro origin such that the device's centre is the probe one gap above the tip's face.
-  options.scaling.device_origin_m = -5000.0 * Eigen::Vector3d(test::kReferenceLength, 5e-6, 0.0);
+  options.scaling = test::ReferenceHandScaling(specs, coupling);
   HapticLoop<2> loop(beam, options);
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;

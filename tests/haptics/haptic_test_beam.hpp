@@ -4,6 +4,8 @@
 // touch, with its tip stiffness 3EI/L^3.
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/core/force_tuple.hpp"
+#include "cosmems/haptics/device_types.hpp"
+#include "cosmems/haptics/hand_scaling.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
@@ -27,6 +29,17 @@ using HapticSurface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressur
 constexpr double kHapticGap = 2e-6;
 /// The stylus's probe (radius as the beam is thick) and its coupling spring, N/m.
 constexpr double kProbeRadius = 2e-6, kProbeCoupling = 5.0;
+
+/// The command line's hand scaling for the reference cantilever on `specs`: 5000 hand m per
+/// micro m, the `coupling` (N/m) felt at half the device's renderable stiffness, and the
+/// device's centre putting the probe 5 um above the tip (one gap above its upper face).
+inline HandScaling ReferenceHandScaling(const DeviceSpecs& specs, double coupling) {
+  HandScaling scaling;
+  scaling.position_scale = 5000.0;
+  scaling.force_scale = 0.5 * specs.max_stiffness_n_per_m * scaling.position_scale / coupling;
+  scaling.device_origin_m = -scaling.position_scale * Eigen::Vector3d(kReferenceLength, 5e-6, 0.0);
+  return scaling;
+}
 
 inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
   ContactOptions contact;

@@ -17,6 +17,7 @@
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptics/haptic_test_beam.hpp"
 #include "hard_cases/hard_case_support.hpp"
+#include "scripted/table_trajectory.hpp"
 
 namespace cosmems {
 namespace {
@@ -24,19 +25,7 @@ namespace {
 constexpr double kRateHz = 1000.0;
 constexpr int kTicks = 2001;  // two presses of 1 s
 
-// A script sampled once a tick from a table, where the misbehaviour is written in.
-class TableTrajectory final : public Trajectory {
- public:
-  explicit TableTrajectory(std::vector<Eigen::Vector3d> points) : points_(std::move(points)) {}
-  Eigen::Vector3d Position(double t_s) const override {
-    const double index = std::clamp(std::round(t_s * kRateHz), 0.0, points_.size() - 1.0);
-    return points_[static_cast<std::size_t>(index)];
-  }
-  double Duration() const override { return (points_.size() - 1.0) / kRateHz; }
-
- private:
-  std::vector<Eigen::Vector3d> points_;
-};
+using test::TableTrajectory;
 
 enum class Script { kPress, kJumps, kNaN, kStalls };
 
@@ -110,17 +99,13 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
                      {}, physics);
   const DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
   HapticLoopOptions options;
-  options.scaling.position_scale = 5000.0;
-  // The coupling felt at half the device's renderable stiffness, as the command line sets it.
-  options.scaling.force_scale = 0.5 * specs.max_stiffness_n_per_m * 5000.0 / coupling;
-  // The device's centre puts the probe one gap above the tip's upper face.
-  options.scaling.device_origin_m = -5000.0 * Eigen::Vector3d(test::kReferenceLength, 5e-6, 0.0);
+  options.scaling = test::ReferenceHandScaling(specs, coupling);
   HapticLoop<2> loop(beam, options);
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
   scripted.specs = specs;
   const std::vector<Eigen::Vector3d> points = Points(script);
-  ScriptedDevice device(std::make_unique<TableTrajectory>(points), scripted);
+  ScriptedDevice device(std::make_unique<TableTrajectory>(points, kRateHz), scripted);
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);
   ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);
 

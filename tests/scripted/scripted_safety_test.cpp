@@ -12,6 +12,7 @@
 #include "cosmems/haptics/safety_layer.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
+#include "table_trajectory.hpp"
 #include "test_clients.hpp"
 
 namespace cosmems {
@@ -20,19 +21,7 @@ namespace {
 constexpr double kRateHz = 1000.0;
 constexpr double kDurationS = 2.0;
 
-/// A script sampled once per tick from a table; the table is where the misbehaviour is made.
-class TableTrajectory final : public Trajectory {
- public:
-  explicit TableTrajectory(std::vector<Eigen::Vector3d> points) : points_(std::move(points)) {}
-  Eigen::Vector3d Position(double t_s) const override {
-    const double index = std::clamp(std::round(t_s * kRateHz), 0.0, points_.size() - 1.0);
-    return points_[static_cast<std::size_t>(index)];
-  }
-  double Duration() const override { return (points_.size() - 1.0) / kRateHz; }
-
- private:
-  std::vector<Eigen::Vector3d> points_;
-};
+using test::TableTrajectory;
 
 std::vector<Eigen::Vector3d> PressPoints() {
   const auto press = MakeBuiltInTrajectory("press", MotionShape{});
@@ -151,7 +140,7 @@ SafetyCounters CheckRun(const Script& script, HandModel hand, const SafetyOption
   options.clock = ScriptedClock::kManual;
   options.hand = hand;
   options.safety = safety;
-  ScriptedDevice device(std::make_unique<TableTrajectory>(script.points), options);
+  ScriptedDevice device(std::make_unique<TableTrajectory>(script.points, kRateHz), options);
   EXPECT_EQ(device.Open(), DeviceStatus::kOk);
   EXPECT_EQ(device.Start(client), DeviceStatus::kOk);
   while (device.Step(250) > 0) {
