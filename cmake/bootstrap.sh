@@ -5,6 +5,8 @@
 #   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks on, then run one
 #   bash cmake/bootstrap.sh sanitize        the unit tests under AddressSanitizer + UBSan (build/asan)
 #   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and --set with libFuzzer (clang)
+#   bash cmake/bootstrap.sh report [OUTDIR [ARGS...]]  the accuracy-versus-time report: CSV,
+#                                     Markdown and plots in OUTDIR (default build/release/accuracy_report)
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
 # otherwise prints the exact apt-get line and stops. COSMEMS_BUILD_DIR overrides build/release.
 set -euo pipefail
@@ -14,6 +16,8 @@ packages=(g++ cmake make libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-
   libbenchmark-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev)
 # libFuzzer comes with clang's runtime libraries; only the fuzzer needs them.
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
+# The report plots with gnuplot; only `report` needs it.
+if [ "${1:-}" = report ]; then packages+=(gnuplot-nox); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -92,6 +96,13 @@ case "${1:-}" in
       exit 1
     fi
     grep -E '^(Done|stat::)' "$fuzz_dir/fuzz.log" ;;
-  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS]" >&2
+  report)
+    shift
+    out=${1:-$build_dir/accuracy_report}
+    if [ $# -gt 0 ]; then shift; fi
+    configure ON
+    cmake --build "$build_dir" -j"$jobs" --target accuracy_cost_bench
+    COSMEMS_BUILD_DIR="$build_dir" exec bash bench/accuracy_cost_report.sh "$out" "$@" ;;
+  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS] | report [OUTDIR [ARGS...]]" >&2
      exit 2 ;;
 esac
