@@ -13,7 +13,8 @@
 // The references: the roots of cos x cosh x = -1 (tests/test_beams.hpp), the elastica by
 // shooting (tests/rod/elastica.hpp), the tie-beam solution of a stretched bridge
 // (tests/beam/stretched_bridge.hpp), pull-in by shooting the beam equation
-// (pullin_shooting.hpp) and the released cantilever's modal series (cantilever_release.hpp).
+// (tests/surface/beam_shooting.hpp) and the released cantilever's modal series
+// (cantilever_release.hpp).
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -38,9 +39,9 @@
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
-#include "pullin_shooting.hpp"
 #include "reference_beam.hpp"
 #include "rod/elastica.hpp"
+#include "surface/beam_shooting.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -164,6 +165,18 @@ void MeasureLinearTip(benchmark::State& state, const TipLoadProblem& problem, in
   state.counters["rel_error"] = TipError(problem, -tip[0] / kLength, -tip[1] / kLength);
 }
 
+// Times a static rod solve from rest; false (the benchmark marked failed) when it does not
+// converge.
+bool TimeRodSolve(benchmark::State& state, CosseratStaticSolver& solver, const RodLoads& loads) {
+  Status status = Status::kOk;
+  for (auto _ : state) {
+    solver.Reset();
+    status = solver.Solve(loads);
+  }
+  if (status != Status::kOk) state.SkipWithError("rod solve failed");
+  return status == Status::kOk;
+}
+
 void MeasureRodTip(benchmark::State& state, const TipLoadProblem& problem, int elements,
                    RodTheory theory) {
   CosseratOptions options;
@@ -173,15 +186,7 @@ void MeasureRodTip(benchmark::State& state, const TipLoadProblem& problem, int e
   const RodLoads loads =
       RodLoads::AtEnd(rod.NodeCount(), Eigen::Vector3d(0.0, -TipForce(problem), 0.0),
                       Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero());
-  Status status = Status::kOk;
-  for (auto _ : state) {
-    solver.Reset();
-    status = solver.Solve(loads);
-  }
-  if (status != Status::kOk) {
-    state.SkipWithError("rod solve failed");
-    return;
-  }
+  if (!TimeRodSolve(state, solver, loads)) return;
   const Eigen::Vector3d tip = rod.TipDisplacement(solver.state()) / kLength;
   state.counters["rel_error"] = TipError(problem, -tip.x(), -tip.y());
 }
@@ -251,16 +256,7 @@ void MeasureBridgeBeam(benchmark::State& state, int elements, bool stretching) {
 void MeasureBridgeRod(benchmark::State& state, int elements) {
   const CosseratRod rod(bench::ReferenceBeam(StructureKind::kBridge, elements, 0));
   CosseratStaticSolver solver(rod);
-  const RodLoads loads = RodLoadsFor(rod, BridgeLoads());
-  Status status = Status::kOk;
-  for (auto _ : state) {
-    solver.Reset();
-    status = solver.Solve(loads);
-  }
-  if (status != Status::kOk) {
-    state.SkipWithError("rod solve failed");
-    return;
-  }
+  if (!TimeRodSolve(state, solver, RodLoadsFor(rod, BridgeLoads()))) return;
   state.counters["rel_error"] = BridgeError(rod.DisplacementAt(solver.state(), kLength / 2).y());
 }
 
@@ -285,14 +281,15 @@ void RegisterBridge() {
 // --- Pull-in -----------------------------------------------------------------------------------
 
 // The pull-in voltage over a 2 um gap, the electrode under the whole beam and no fringing field,
-// against PullInShooting: the cantilever, and the bridge with mid-plane stretching (without it a
-// bridge pulls in some 6 % lower, which its linear rows show). Timed: SolvePullIn from rest.
+// against the shooting solution of the pull-in tests (surface/beam_shooting.hpp): the cantilever,
+// and the bridge with mid-plane stretching (without it a bridge pulls in some 6 % lower, which its
+// linear rows show). Timed: SolvePullIn from rest.
 double PullInVoltage(bool bridge) {
   static std::map<bool, double> cache;
   auto it = cache.find(bridge);
   if (it == cache.end()) {
     const double kappa = bridge ? ReferenceEa() * kGap * kGap / (2.0 * ReferenceEi()) : 0.0;
-    const double beta = bench::PullInShooting(bridge, kappa).PullIn().beta;
+    const double beta = test::BeamShooting(bridge, 2, 0.0, kappa).Fold().second;
     const double width = test::ReferenceSection().width;
     const double voltage = std::sqrt(2.0 * beta * ReferenceEi() * kGap * kGap * kGap /
                                      (kVacuumPermittivity * width * std::pow(kLength, 4)));

@@ -88,12 +88,11 @@ NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, Nonlin
     double previous = std::numeric_limits<double>::infinity();
     for (int iteration = 1; iteration <= options.newton.max_iterations; ++iteration) {
       ++out.iterations;
-      // Converged also when the residual has stopped falling within the rounding error of K d,
-      // which on a fine mesh lies above any fixed share of the terms (see
-      // SymmetricBandMatrix::ProductRoundOff).
+      // kd serves as the bound's work vector: the next evaluation forms K d again.
       const double norm = residual.norm();
       bool converged = norm <= options.newton.residual_tolerance * reference ||
-                       (norm >= 0.5 * previous && norm <= k.ProductRoundOff(d, kd));
+                       NewtonOptions::StalledAtRoundOff(norm, previous,
+                                                        [&] { return k.ProductRoundOff(d, kd); });
       previous = norm;
       if (!converged) {
         jacobian.mutable_data() = k.data() + tangent.band().data();

@@ -75,12 +75,12 @@ class FoldPath {
       double reference = 0.0;
       if (!Evaluate(reference)) return Status::kNonFinite;
       const double c = control_.Evaluate(d_) - target;
-      // A residual that has stopped falling within the rounding error of K d has converged: on
-      // a fine mesh that floor lies above the tolerance (SymmetricBandMatrix::ProductRoundOff).
+      // a_ serves as the bound's work vector: the Newton step below overwrites it.
       const double norm = residual_.norm();
       const bool converged =
           (norm <= newton_.residual_tolerance * reference ||
-           (norm >= 0.5 * previous && norm <= model_.Stiffness().ProductRoundOff(d_, a_))) &&
+           NewtonOptions::StalledAtRoundOff(
+               norm, previous, [&] { return model_.Stiffness().ProductRoundOff(d_, a_); })) &&
           std::abs(c) <= newton_.residual_tolerance * gap_;
       previous = norm;
       const Status factored = Factor();

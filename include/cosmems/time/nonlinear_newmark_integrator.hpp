@@ -251,7 +251,9 @@ class NonlinearNewmarkIntegrator {
       // How much the factor's last solve cut the residual decides whether it serves again.
       if (iteration > 1) factor_contraction_ = norm / previous_norm;
       const double tolerance = options_.residual_tolerance * reference;
-      if (norm <= tolerance || (iteration > 1 && AtRoundOff(norm, previous_norm, d_mid))) {
+      if (norm <= tolerance ||
+          (iteration > 1 && NewtonOptions::StalledAtRoundOff(norm, previous_norm,
+                                                             [&] { return RoundOff(d_mid); }))) {
         if (settled(iteration)) return Accept(h);
         continue;
       }
@@ -308,18 +310,15 @@ class NonlinearNewmarkIntegrator {
     return Status::kNotConverged;
   }
 
-  // Whether a residual that has stopped falling (it kept over half its size through the last
-  // iteration) lies within the rounding error of its stiffness products, below which no
-  // iteration can take it. A fine mesh stops there above residual_tolerance: its K d is a small
-  // difference of large products (100 elements at 100 us steps stalled at 7e-9 of the reference,
-  // a sixteenth of the bound). Only a stalled iteration pays for the bound's product.
-  bool AtRoundOff(double norm, double previous_norm, const Eigen::VectorXd& d_mid) {
-    if (norm < 0.5 * previous_norm) return false;
+  // The rounding error of the residual's stiffness products, K d_mid and the stiffness-
+  // proportional damping's K v_mid (100 elements at 100 us steps stalled at 7e-9 of the
+  // reference, a sixteenth of this bound).
+  double RoundOff(const Eigen::VectorXd& d_mid) {
     double bound = stiffness_.ProductRoundOff(d_mid, work_);
     if (damping_.stiffness != 0.0) {
       bound += damping_.stiffness * stiffness_.ProductRoundOff(v_mid_, work_);
     }
-    return norm <= bound;
+    return bound;
   }
 
   // Takes d_new_ and a_new_ (consistent with it) as the state at the end of the sub-step.
