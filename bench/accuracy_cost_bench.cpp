@@ -402,7 +402,7 @@ class FullOrderRelease {
 };
 
 // Exact propagation of k modes of the model, started as the library's transient analysis
-// starts a release: q0 = Phi^T M_0 d0 from the static deflection d0.
+// starts a release: q0 fitted to the static deflection d0 (ModalModel::Project).
 class ModalRelease {
  public:
   ModalRelease(int elements, int order, int modes, double dt)
@@ -415,8 +415,8 @@ class ModalRelease {
         tip_(model_.dofs().Reduced(model_.NodeCount() - 1, NodalDof::kUy)) {
     const StaticSolution deflected = SolveStatic(model_, ReleaseLoads());
     if (status_ == Status::kOk) status_ = deflected.status;
-    propagator_.Initialize(model_.Mass(0) * deflected.displacement,
-                           Eigen::VectorXd::Zero(model_.FreeDofCount()), released_);
+    propagator_.Initialize(modal_.Project(model_, deflected.displacement),
+                           Eigen::VectorXd::Zero(modal_.shapes.cols()), released_);
   }
 
   Status status() const { return status_; }

@@ -27,9 +27,9 @@ void BM_HapticTickModal(benchmark::State& state) {
   const double dt = 1e-6;
   ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
                              modal.ResidualFlexibility(model, pattern), dt / model.units().time);
-  const int n = model.FreeDofCount();
   Eigen::VectorXd s = Eigen::VectorXd::Zero(1);
-  propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(modal.shapes.cols());
+  propagator.Initialize(q0, q0, s);
   const int tip = model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy);
   const int steps = static_cast<int>(kTick / dt);
   double t = 0.0;

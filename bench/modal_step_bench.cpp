@@ -19,9 +19,9 @@ void BM_ModalStep(benchmark::State& state) {
       MakeModalModel(model, SolveModal(model, options), DampingModel::QualityFactor(100));
   ModalPropagator propagator(modal.coordinates, modal.shapes, pattern,
                              modal.ResidualFlexibility(model, pattern), 1e-6 / model.units().time);
-  const int n = model.FreeDofCount();
   Eigen::VectorXd s = Eigen::VectorXd::Ones(1);
-  propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(modal.shapes.cols());
+  propagator.Initialize(q0, q0, s);
   const int tip = model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy);
   auto step = [&] {
     s[0] = -s[0];

@@ -133,6 +133,61 @@ TEST(ModalAnalysisTest, AxialModeOfAShortStubbyBar) {
   EXPECT_NEAR(axial, expected, 1e-6 * expected);
 }
 
+// The planar reference cantilever's axial modes, (2k - 1)/(4L) sqrt(E/rho), fall among its
+// bending modes: mode 8 is the first (10.65 MHz) and mode 15 the second (31.9 MHz). At every
+// series order the 16 lowest modes must hold both, in ascending order, once each. (Following
+// each root by the index of its eigenvalue in P(l) lost the second axial mode at order 1: the
+// truncated series shifts that index.) Order 0's bar is the linear element, whose modes are
+// known exactly on the mesh: w_h^2 = (6 c^2 / h^2)(1 - cos kh)/(2 + cos kh) with the continuous
+// k (1e-14 measured). Orders >= 1 converge on the continuous answer (2.5e-6, 6e-9 and 1.6e-11
+// for mode 2 at orders 1-3), so 1e-5 bounds them all.
+TEST(ModalAnalysisTest, AxialModesAmongTheBendingModesAtEveryOrder) {
+  const Material si = test::Silicon();
+  const int elements = 30;
+  const double c = std::sqrt(si.young_modulus / si.density);
+  const double h = kReferenceLength / elements;
+  for (int order = 0; order <= 3; ++order) {
+    const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, kReferenceLength, si,
+                                           test::ReferenceSection(), elements, order));
+    ModalOptions options;
+    options.count = 16;
+    const ModalResult r = SolveModal(model, options);
+    ASSERT_EQ(r.status, Status::kOk) << "order " << order;
+    std::vector<double> axial_modes;
+    for (std::size_t i = 0; i < r.modes.size(); ++i) {
+      if (i > 0) {
+        EXPECT_LT(r.modes[i - 1].frequency_hz, r.modes[i].frequency_hz) << i;
+      }
+      if (r.modes[i].kind == ModeKind::kAxial) axial_modes.push_back(r.modes[i].frequency_hz);
+    }
+    ASSERT_EQ(axial_modes.size(), 2u) << "order " << order;
+    for (int j = 1; j <= 2; ++j) {
+      const double k = (2 * j - 1) * kPi / (2 * kReferenceLength);
+      const double exact = order == 0 ? std::sqrt(6.0 * c * c / (h * h) * (1.0 - std::cos(k * h)) /
+                                                  (2.0 + std::cos(k * h))) /
+                                            (2.0 * kPi)
+                                      : k * c / (2.0 * kPi);
+      EXPECT_NEAR(axial_modes[j - 1], exact, (order == 0 ? 1e-10 : 1e-5) * exact)
+          << "order " << order << " axial mode " << j;
+    }
+  }
+}
+
+// On 8 elements the modal solve is a dense one over the whole space, which holds vectors the
+// series cannot resolve; modes 1-4 must still converge at orders 2 and 3 (they stalled at the
+// rounding floor of P(l), 3e-13 of l_1). Order 2 on 8 elements puts mode 4 within 1e-6 of the
+// frequency equation (measured 1.6e-7).
+TEST(ModalAnalysisTest, CoarseMeshesConvergeAtHighSeriesOrders) {
+  for (int order : {2, 3}) {
+    const std::vector<double> f = Frequencies(StructureKind::kCantilever, 8, order, 4);
+    ASSERT_EQ(f.size(), 4u);
+    for (int n = 1; n <= 4; ++n) {
+      const double exact = Exact(StructureKind::kCantilever, n);
+      EXPECT_NEAR(f[n - 1], exact, 1e-6 * exact) << "order " << order << " mode " << n;
+    }
+  }
+}
+
 TEST(ModalAnalysisTest, FewerDegreesOfFreedomThanModesRequested) {
   const std::vector<double> f = Frequencies(StructureKind::kBridge, 2, 1, 10);
   EXPECT_EQ(f.size(), 3u);  // the centre node: ux, uy, rz

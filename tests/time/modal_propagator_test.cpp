@@ -89,7 +89,10 @@ TEST(ModalPropagatorTest, StaticCorrectionRestoresTheTruncatedModesStatically) {
   ModalPropagator p(modal.coordinates, modal.shapes, f, modal.ResidualFlexibility(model, f),
                     period / 7);
   const int n = model.FreeDofCount();
-  p.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), Vec(1.0));
+  p.Initialize(Eigen::VectorXd::Zero(4), Eigen::VectorXd::Zero(4), Vec(1.0));
+  // A physical state in place of the modal one is refused by name.
+  EXPECT_THROW(p.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(4), Vec(1.0)),
+               std::invalid_argument);
 
   Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(model.Stiffness().ToDense(),
                                                                 model.Mass(0).ToDense());
@@ -127,7 +130,7 @@ TEST(ModalPropagatorTest, FullAndModalPathsAgreeOnTheResolvedModes) {
   const double dt = 2 * kPi / modal.coordinates[5].omega / 100;
   ModalPropagator reduced(modal.coordinates, modal.shapes, Eigen::MatrixXd::Zero(n, 1),
                           Eigen::MatrixXd(), dt);
-  reduced.Initialize(model.Mass(0) * d0, Eigen::VectorXd::Zero(n), Vec(0.0));
+  reduced.Initialize(modal.Project(model, d0), Eigen::VectorXd::Zero(6), Vec(0.0));
   LinearNewmarkIntegrator full(model.Mass(0), model.Stiffness(), {},
                                GeneralizedAlphaParameters::Newmark(0.25, 0.5), dt);
   ASSERT_EQ(full.Initialize(d0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)), Status::kOk);
@@ -143,6 +146,29 @@ TEST(ModalPropagatorTest, FullAndModalPathsAgreeOnTheResolvedModes) {
   // for mode 1 and 0.18 rad for mode 6, whose share of the tip deflection is 7e-5; modes 2-5
   // add less than that together. 1e-4 of the amplitude bounds the sum.
   EXPECT_LT(worst, 1e-4 * std::abs(d0[tip]));
+}
+
+// A state made of the modes projects back onto its modal coordinates at every series order.
+// At order >= 1 the shapes have unit modal mass in the polynomial's sense, not Phi^T M_0 Phi =
+// I, so Phi^T M_0 d alone is off by the modes' M_0 masses (3e-4 to 2e-3 here); the least-squares
+// projection is exact up to the rounding of the 8 x 8 Gram matrix (1e-12 of the largest
+// coordinate).
+TEST(ModalPropagatorTest, ProjectionRecoversModalCoordinatesAtEveryOrder) {
+  for (int order = 0; order <= 3; ++order) {
+    const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
+                                           test::Silicon(), test::ReferenceSection(), 20, order));
+    ModalOptions options;
+    options.count = 8;
+    const ModalModel modal = MakeModalModel(model, SolveModal(model, options), DampingModel{});
+    Eigen::VectorXd q(8);
+    q << 1.0, -0.5, 0.25, 0.125, -0.0625, 0.03, -0.02, 0.01;
+    const Eigen::VectorXd d = modal.shapes * q;
+    EXPECT_LT((modal.Project(model, d) - q).cwiseAbs().maxCoeff(), 1e-12) << "order " << order;
+    const Eigen::VectorXd plain = modal.shapes.transpose() * (model.Mass(0) * d);
+    if (order >= 1) {
+      EXPECT_GT((plain - q).cwiseAbs().maxCoeff(), 1e-5) << "order " << order;
+    }
+  }
 }
 
 }  // namespace

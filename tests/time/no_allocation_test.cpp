@@ -54,7 +54,8 @@ TEST(NoAllocationTest, ModalStepsAllocateNothing) {
                              modal.ResidualFlexibility(model, pattern), 1e-3);
   const int n = model.FreeDofCount();
   const Eigen::VectorXd s = Eigen::VectorXd::Ones(1);
-  propagator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s);
+  const Eigen::VectorXd q0 = Eigen::VectorXd::Zero(modal.shapes.cols());
+  propagator.Initialize(q0, q0, s);
   Eigen::VectorXd d(n);
   Status status = Status::kOk;
   EXPECT_EQ(test::AllocationsDuring(100,

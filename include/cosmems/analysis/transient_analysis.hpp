@@ -74,7 +74,8 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
     const Eigen::MatrixXd residual = modal.ResidualFlexibility(model, pattern);
     ModalPropagator propagator(modal.coordinates, modal.shapes, pattern, residual, dt);
     Eigen::VectorXd s = Eigen::VectorXd::Constant(1, options.Amplitude(0));
-    propagator.Initialize(model.Mass(0) * d0, Eigen::VectorXd::Zero(n), s);
+    propagator.Initialize(modal.Project(model, (d0 - residual * s).eval()),
+                          Eigen::VectorXd::Zero(modal.shapes.cols()), s);
     const Eigen::RowVectorXd output_shapes = output.Evaluate(modal.shapes);
     const double output_static = output.Evaluate(residual.col(0).eval());
     recorder.Run(

@@ -54,4 +54,14 @@ inline void RequireFinite(const std::string& field, double value) {
   }
 }
 
+/// Throws std::invalid_argument("FIELD has SIZE entries: must have EXPECTED (WHAT)") unless
+/// size == expected.
+inline void RequireSize(const std::string& field, long size, long expected,
+                        const std::string& what) {
+  if (size != expected) {
+    throw std::invalid_argument(field + " has " + std::to_string(size) + " entries: must have " +
+                                std::to_string(expected) + " (" + what + ")");
+  }
+}
+
 }  // namespace cosmems

@@ -64,12 +64,15 @@ class ModalPropagator {
     g_next_.setZero(k);
   }
 
-  /// Modal state from a physical one: q = Phi^T M d, q' = Phi^T M v (`mass_d` = M d,
-  /// `mass_v` = M v), with the load amplitudes s0 at t = 0.
-  void Initialize(const Eigen::VectorXd& mass_d, const Eigen::VectorXd& mass_v,
+  /// The modal state q, q' with the load amplitudes s0 at t = 0 (ModalModel::Project gives q
+  /// from a physical state: of d - R P s0 for a displacement d, since d = Phi q + R P s).
+  void Initialize(const Eigen::VectorXd& q0, const Eigen::VectorXd& qdot0,
                   const Eigen::VectorXd& s0) {
-    q_ = shapes_.transpose() * mass_d;
-    qdot_ = shapes_.transpose() * mass_v;
+    RequireSize("q0", q0.size(), q_.size(), "one per mode");
+    RequireSize("qdot0", qdot0.size(), q_.size(), "one per mode");
+    RequireSize("s0", s0.size(), s_.size(), "one per load pattern");
+    q_ = q0;
+    qdot_ = qdot0;
     s_ = s0;
     g_ = modal_loads_ * s_;
     time_ = 0.0;
