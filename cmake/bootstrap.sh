@@ -14,6 +14,10 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev
   libbenchmark-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev)
+# The viewer (GLFW, OpenGL, Dear ImGui with its back ends, stb for PNG) and its headless test
+# (a virtual X server and Mesa's software renderer).
+packages+=(pkg-config libglfw3-dev libgl-dev libimgui-dev libstb-dev xvfb xauth libgl1-mesa-dri
+  libglx-mesa0)
 # libFuzzer comes with clang's runtime libraries; only the fuzzer needs them.
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 # The report plots with gnuplot; only `report` needs it.

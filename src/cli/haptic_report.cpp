@@ -7,10 +7,8 @@
 #include "contact_report.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
-#include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
-#include "haptic_settings.hpp"
+#include "haptic_session.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -25,44 +23,9 @@ nlohmann::ordered_json TimesJson(const LoopStats& s) {
 // How long an Omni session lasts when the scene does not say [s].
 constexpr double kDefaultSessionS = 30.0;
 
-// The device a scene asks for, open, with the settings derived from its specs.
-struct OpenedDevice {
-  std::unique_ptr<HapticDevice> device;
-  ScriptedDevice* scripted = nullptr;        ///< the same device when scripted
-  OpenHapticsDevice* openhaptics = nullptr;  ///< the same device when an OpenHaptics one
-  HapticSettings settings;
-};
-
-OpenedDevice OpenDevice(const Scene& scene) {
-  const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
-  OpenedDevice out;
-  if (device_scene.backend == DeviceBackend::kScripted) {
-    out.settings = MakeHapticSettings(scene, ScriptedSpecs(scene));
-    ScriptedOptions options;
-    options.clock = device_scene.realtime ? ScriptedClock::kPaced : ScriptedClock::kFast;
-    options.specs = out.settings.specs;
-    auto scripted = std::make_unique<ScriptedDevice>(std::move(out.settings.trajectory), options);
-    out.scripted = scripted.get();
-    out.device = std::move(scripted);
-  } else {
-    OpenHapticsOptions options;
-    options.scheduler_rate_hz = static_cast<int>(scene.analysis.rate);
-    auto openhaptics = std::make_unique<OpenHapticsDevice>(options);
-    out.openhaptics = openhaptics.get();
-    out.device = std::move(openhaptics);
-  }
-  if (const DeviceStatus status = out.device->Open(); status != DeviceStatus::kOk) {
-    std::string reason = ToString(status);
-    if (out.openhaptics) reason += ": " + out.openhaptics->last_error().description;
-    throw std::runtime_error("device.backend: the device did not open (" + reason + ")");
-  }
-  if (out.openhaptics) out.settings = MakeHapticSettings(scene, out.device->specs());
-  return out;
-}
-
 // Runs the servo loop until the scripted stylus ends, or for the scene's duration on a real
 // device (sooner if its scheduler fails).
-void RunSession(const Scene& scene, OpenedDevice& opened) {
+void RunSession(const Scene& scene, const OpenedDevice& opened) {
   if (opened.scripted) {
     opened.scripted->WaitUntilDone();
     return;
@@ -79,39 +42,21 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
   RunHeader header = RunHeader::Start(scene);
   const auto start = std::chrono::steady_clock::now();
-  OpenedDevice opened = OpenDevice(scene);
-  HapticDevice& device = *opened.device;
-  const HapticSettings& settings = opened.settings;
-  // Numbered node by node in 3-D, so that a press off the axis twists the beam (ProbeContact).
-  const BeamModel<Dim> model(MakeBeamDescription(scene),
-                             Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField);
-  SceneForces<Dim> forces(model, scene);
-  HapticPhysicsOptions physics;
-  physics.tick_s = 1.0 / scene.analysis.rate;
-  HapticBeam<Dim> beam(model, settings.probe, forces.All(), forces.contact(), {}, physics);
-  HapticLoopOptions loop_options;
-  loop_options.scaling = settings.scaling;
-  // A real device's scheduler paces the servo loop: the physics then always has its own thread.
-  loop_options.physics =
-      device_scene.realtime || opened.openhaptics ? PhysicsThread::kOwn : PhysicsThread::kServo;
-  HapticLoop<Dim> loop(beam, loop_options);
+  HapticSession<Dim> session(scene, OpenDevice(scene));
+  const OpenedDevice& opened = session.opened();
+  HapticDevice& device = session.device();
+  const HapticSettings& settings = session.settings();
+  HapticLoop<Dim>& loop = session.loop();
 
   HapticResults r;
   r.device_model = device.specs().model;
   r.calibration = device.Calibration();
-  loop.StartPhysics();
-  if (device.Start(loop) != DeviceStatus::kOk) {
-    loop.StopPhysics();
-    std::string reason = "the servo loop did not start";
-    if (opened.openhaptics) reason += ": " + opened.openhaptics->last_error().description;
-    throw std::runtime_error("device.backend: " + reason);
-  }
+  session.Start();
   RunSession(scene, opened);
-  device.Stop();
-  loop.StopPhysics();
+  session.Stop();
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  header.dofs = model.FreeDofCount();
+  header.dofs = session.model().FreeDofCount();
   r.servo = device.stats();
   r.physics = loop.physics_stats();
   r.failed_physics_ticks = loop.failed_ticks();

@@ -33,6 +33,14 @@ TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   EXPECT_NEAR(local.force_n, series * depth, 1e-9 * series * depth);
   EXPECT_NEAR(local.stiffness_n_per_m, series, 1e-9 * series);
   EXPECT_EQ(local.clearance_m, 0.0);
+  // The display's frame carries the slope at each node, with which it orients the faces: under a
+  // tip load, theta_z(L) = F L^2 / (2 E I) = 3 w(L) / (2 L), and the clamp stays level.
+  const HapticFrame frame = beam.MakeFrame();
+  const double tip_w = -series * depth / k_tip;
+  EXPECT_NEAR(frame.deflection_m[20], tip_w, -1e-9 * tip_w);
+  EXPECT_NEAR(frame.rotation_rad[20], 1.5 * tip_w / test::kReferenceLength,
+              -1e-9 * tip_w / test::kReferenceLength);
+  EXPECT_EQ(frame.rotation_rad[0], 0.0);
   // The local model predicts the next press: the problem is linear, so exactly.
   const double deeper = 0.8e-6;
   const double predicted = local.ForceAt(OverTip(deeper)).y();

@@ -115,5 +115,42 @@ TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   EXPECT_NEAR(force, expected, 0.1 * expected);
 }
 
+// The panel's "Reset Failure": asked for from another thread while the beam lies stuck where the
+// stylus laid it (pressed at the tip, swept to midspan, lifted), the next physics tick frees it.
+TEST(HapticLoopTest, AResetRequestedFromAnotherThreadFreesTheStuckBeam) {
+  const BeamModel<2> model = test::HapticCantilever();
+  test::HapticSurface forces = test::MakeHapticSurface(model);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 50.0}, &forces, &forces.get<0>());
+  const HapticLoopOptions options = Options(PhysicsThread::kServo);
+  HapticLoop<2> loop(beam, options);
+  int tick = 0;
+  auto touch = [&](double x, double depth) {
+    DeviceState state;
+    state.tick = static_cast<std::uint64_t>(tick);
+    state.time_s = 1e-3 * tick++;
+    state.position_m = options.scaling.ToDevice(
+        Eigen::Vector3d(x, 0.5 * kReferenceThickness - depth + kProbeRadius, 0.0));
+    ForceCommand command;
+    loop.Tick(state, command);
+  };
+  const double length = test::kReferenceLength, depth = 3e-6;
+  for (int i = 0; i <= 200; ++i) touch(length, depth * i / 200.0);
+  for (int i = 0; i <= 200; ++i) touch(length * (1.0 - 0.5 * i / 200.0), depth);
+  for (int i = 0; i <= 200; ++i) touch(0.5 * length, depth - 8e-6 * i / 200.0);
+  ASSERT_TRUE(loop.UpdateFrame());
+  ASSERT_TRUE(loop.frame().contact.Stuck());
+  touch(0.5 * length, -5e-6);  // no request yet: still stuck
+  loop.UpdateFrame();
+  ASSERT_TRUE(loop.frame().contact.Stuck());
+
+  std::thread panel([&loop] { loop.RequestReset(); });
+  panel.join();
+  touch(0.5 * length, -5e-6);
+  ASSERT_TRUE(loop.UpdateFrame());
+  EXPECT_EQ(loop.frame().contact.state, ContactState::kFree);
+  EXPECT_LT(std::abs(loop.frame().deflection_m[20]), 1e-3 * test::kHapticGap);
+  EXPECT_EQ(loop.failed_ticks(), 0u);
+}
+
 }  // namespace
 }  // namespace cosmems

@@ -102,6 +102,7 @@ class HapticBeam {
     frame.node_x_m.resize(nodes);
     for (int k = 0; k < nodes; ++k) frame.node_x_m[k] = model_.NodeX()[k] * model_.units().length;
     frame.deflection_m.setZero(nodes);
+    frame.rotation_rad.setZero(nodes);
     Fill(frame);
     return frame;
   }
@@ -115,6 +116,8 @@ class HapticBeam {
     for (int k = 0; k < frame.deflection_m.size(); ++k) {
       const int dof = model_.dofs().Reduced(k, NodalDof::kUy);
       frame.deflection_m[k] = dof >= 0 ? d[dof] * model_.units().length : 0.0;
+      const int rotation = model_.dofs().Reduced(k, NodalDof::kRz);
+      frame.rotation_rad[k] = rotation >= 0 ? d[rotation] : 0.0;  // radians in every unit system
     }
     if (contact_) {
       frame.contact = contact_->Summary();

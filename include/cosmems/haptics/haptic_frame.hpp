@@ -16,6 +16,7 @@ struct HapticFrame {
   Eigen::Vector3d probe_force_n = Eigen::Vector3d::Zero();  ///< the beam's push on the probe
   Eigen::VectorXd node_x_m;                                 ///< node positions along the axis
   Eigen::VectorXd deflection_m;                             ///< u_y at each node
+  Eigen::VectorXd rotation_rad;                             ///< theta_z (slope) at each node
   ContactSummary contact;                                   ///< with the substrate
   ContactEvents events;                                     ///< counted since the start
   Status status = Status::kOk;                              ///< of the tick's physics

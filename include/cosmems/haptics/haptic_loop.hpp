@@ -72,6 +72,10 @@ class HapticLoop final : public ServoClient {
     command.force_n = options_.scaling.HandForce(model_.ForceAt(micro));
   }
 
+  /// The paper's "Reset Failure" asked for from any thread (a button on the display side): the
+  /// next physics tick resets the beam, as the stylus button does. Wait-free.
+  void RequestReset() { reset_requested_.store(true, std::memory_order_release); }
+
   /// Display side (one thread): takes the newest frame, true when it changed.
   bool UpdateFrame() { return frames_.Update(); }
   const HapticFrame& frame() const { return frames_.Front(); }
@@ -105,7 +109,9 @@ class HapticLoop final : public ServoClient {
                        ((input.buttons >> options_.reset_button) & 1u) != 0 &&
                        ((last_buttons_ >> options_.reset_button) & 1u) == 0;
     last_buttons_ = input.buttons;
-    if (reset) beam_.Reset();
+    // Both sources are consumed every tick, so a request and a press together reset once.
+    const bool requested = reset_requested_.exchange(false, std::memory_order_acq_rel);
+    if (reset || requested) beam_.Reset();
     if (beam_.Advance(input.probe_m, input.time_s) != Status::kOk) ++failed_;
     beam_.Fill(frames_.Back());
     frames_.Publish();
@@ -136,6 +142,7 @@ class HapticLoop final : public ServoClient {
   TripleBuffer<HapticFrame> frames_;  // physics -> display
   std::thread thread_;
   std::atomic<bool> stop_{false};
+  std::atomic<bool> reset_requested_{false};  // any thread -> the physics tick
 };
 
 }  // namespace cosmems

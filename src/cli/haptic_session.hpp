@@ -1,0 +1,76 @@
+#pragma once
+
+#include <memory>
+
+#include "cosmems/beam/beam_model.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/haptic_device.hpp"
+#include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/scene/scene.hpp"
+#include "cosmems/scene/scene_forces.hpp"
+#include "haptic_settings.hpp"
+
+namespace cosmems {
+class OpenHapticsDevice;
+class ScriptedDevice;
+}  // namespace cosmems
+
+namespace cosmems::internal {
+
+/// A haptic device, open, with the settings derived from its specs.
+struct OpenedDevice {
+  std::unique_ptr<HapticDevice> device;
+  ScriptedDevice* scripted = nullptr;        ///< the same device when scripted
+  OpenHapticsDevice* openhaptics = nullptr;  ///< the same device when an OpenHaptics one
+  HapticSettings settings;
+  /// The ticks follow the wall clock (a paced script, a real device's scheduler): the physics
+  /// then runs on its own thread; otherwise inside each servo tick, deterministically.
+  bool paced = false;
+};
+
+/// The device a scene's [device] asks for, open: a ScriptedDevice replaying its trajectory
+/// (paced when realtime = true) or an OpenHapticsDevice at the scene's rate. Throws
+/// std::runtime_error naming device.backend when the device does not open, CliInputError for
+/// settings the device cannot render.
+OpenedDevice OpenDevice(const Scene& scene);
+
+/// One touch of a scene's beam, built the same way for every program: the beam model of the
+/// scene (numbered node by node in 3-D, so that a press off the axis twists the beam), the
+/// effects it declares, the HapticBeam with the probe, and the HapticLoop the device's servo
+/// thread ticks. Start() runs it, Stop() (or the destructor) ends it; the parts stay readable
+/// after Stop() for the figures.
+template <int Dim>
+class HapticSession {
+ public:
+  /// `device` must be open. `physics` sets the substeps and rho_inf; its tick is the period of
+  /// the scene's analysis.rate.
+  HapticSession(const Scene& scene, OpenedDevice device, HapticPhysicsOptions physics = {});
+  ~HapticSession();
+  HapticSession(const HapticSession&) = delete;
+  HapticSession& operator=(const HapticSession&) = delete;
+
+  /// Starts the physics thread (paced devices) and the servo loop. Throws std::runtime_error
+  /// naming device.backend when the loop does not start.
+  void Start();
+  /// Stops the servo loop, then the physics thread; idempotent. The device stays open.
+  void Stop();
+
+  HapticDevice& device() { return *opened_.device; }
+  const OpenedDevice& opened() const { return opened_; }
+  const HapticSettings& settings() const { return opened_.settings; }
+  const BeamModel<Dim>& model() const { return model_; }
+  HapticLoop<Dim>& loop() { return loop_; }
+  const HapticLoop<Dim>& loop() const { return loop_; }
+
+ private:
+  OpenedDevice opened_;
+  BeamModel<Dim> model_;
+  SceneForces<Dim> forces_;
+  HapticBeam<Dim> beam_;
+  HapticLoop<Dim> loop_;
+};
+
+extern template class HapticSession<2>;
+extern template class HapticSession<3>;
+
+}  // namespace cosmems::internal
