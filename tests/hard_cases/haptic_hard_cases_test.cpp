@@ -63,16 +63,16 @@ std::vector<Eigen::Vector3d> Points(Script script) {
 struct StylusCase {
   Script script;
   int substeps;  ///< physics steps a 1 ms tick
-  /// Ticks whose physics fails, measured: after a stall the stylus snaps 12 mm (2.3 um of probe)
-  /// into the beam and holds still; Newton's first iterate then crosses the substrate, where the
-  /// Casimir pressure is not defined, at every halving of the step, so the tick is refused
-  /// (kNonFinite) until the hand moves (348 ticks). In single 1 ms steps the jumps' presses and
-  /// lifts turn the step matrix indefinite instead (kNotPositiveDefinite).
+  /// Ticks whose physics fails, measured. After a stall the stylus snaps 12 mm (2.3 um of probe)
+  /// into the beam: Newton's iterates cross the substrate, where the Casimir pressure is not
+  /// defined, and are pulled back along their increment, so every tick runs (before that pull-back
+  /// 348 ticks were refused). In single 1 ms steps the jumps' presses still fail 5 ticks
+  /// (kNonFinite: a jump drives the probe 2 um into the beam at once, and Newton's iterates stay
+  /// across the substrate through 10 halvings of their increment).
   bool fails;
-  /// Whether the physics runs again by the end of the script. In single 1 ms steps a tip stuck by
-  /// the adhesion and the Casimir pressure is not peeled off again: every step of the peel turns
-  /// the matrix indefinite (kNotPositiveDefinite), so the beam stays stuck and the hand feels
-  /// nothing (measured: one release of two, 1180 of 2001 ticks refused).
+  /// Whether the physics runs again by the end of the script (it does in every case since Newton
+  /// solves an indefinite step with a raised mass term; before, a tip stuck in single 1 ms steps
+  /// was never peeled off and 1180 of 2001 ticks were refused).
   bool recovers;
 };
 
@@ -146,9 +146,14 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   } else {
     EXPECT_EQ(failed, 0);
   }
-  if (substeps == 10) {  // every press sticks the tip and every lift frees it
+  // Every press sticks the tip and every lift frees it; a jump along the beam's axis or up carries
+  // the probe off a stuck tip, which comes free and sticks again when the stylus jumps back (7 of
+  // each measured with the jumps).
+  EXPECT_EQ(frame.events.releases, frame.events.stuck);
+  if (script == Script::kJumps) {
+    EXPECT_GE(frame.events.stuck, 2);
+  } else {
     EXPECT_EQ(frame.events.stuck, 2);
-    EXPECT_EQ(frame.events.releases, 2);
   }
   test::RecordFigure("failed_ticks", failed);
   test::RecordFigure("failed_ticks_non_finite", non_finite_status);
@@ -162,9 +167,9 @@ INSTANTIATE_TEST_SUITE_P(Scripts, StylusTest,
                          ::testing::Values(StylusCase{Script::kPress, 10, false, true},
                                            StylusCase{Script::kJumps, 10, false, true},
                                            StylusCase{Script::kNaN, 10, false, true},
-                                           StylusCase{Script::kStalls, 10, true, true},
+                                           StylusCase{Script::kStalls, 10, false, true},
                                            StylusCase{Script::kPress, 1, false, true},
-                                           StylusCase{Script::kJumps, 1, true, false}),
+                                           StylusCase{Script::kJumps, 1, true, true}),
                          StylusName);
 
 // A NaN probe position handed to the physics directly (HapticLoop never hands it one: the device

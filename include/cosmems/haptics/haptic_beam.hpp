@@ -18,8 +18,11 @@ namespace cosmems {
 struct HapticPhysicsOptions {
   double tick_s = 1e-3;  ///< simulated time per Advance() (the servo period)
   /// Implicit steps per tick. The reference cantilever's first mode (68.8 kHz) is far above the
-  /// servo rate, so the steps do not resolve it; 10 keep the Casimir snap-in within what one
-  /// Newton step converges on (see bench/surface_tick_bench.cpp).
+  /// servo rate, so the steps do not resolve it whatever their number: the hand feels the
+  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp: medians of 8, 16 and
+  /// 60 us for 1, 2 and 10 steps, and in the tick that snaps the tip on, whose step matrix turns
+  /// indefinite, 234 us, 155 us and 1.2 ms); 10 is the default because 2 fail two ticks where a
+  /// stiff coupling lays the beam down along its length (HapticBeamTest), which 10 take.
   int substeps = 10;
   /// Generalised-alpha's spectral radius: 0 annihilates the unresolved vibrations (the hand
   /// feels the quasi-static beam, as it would the real one) and adds no energy at impacts.

@@ -200,9 +200,7 @@ class NonlinearNewmarkIntegrator {
       // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
       if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
       const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
-      r_.setZero();
-      tangent_.Clear();
-      if (!force_.Evaluate(d_new_, r_, tangent_)) return Status::kNonFinite;
+      if (!EvaluateWithin(iteration, ca)) return Status::kNonFinite;
       if (viscous) {
         v_new_ = v_star_ + (gamma * h) * a_new_;
         if (!force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
@@ -271,6 +269,7 @@ class NonlinearNewmarkIntegrator {
       // J delta = R, the rank-one part of the tangent always fresh.
       const double scale = ct * tangent_.rank_one_scale();
       const Eigen::VectorXd& u = tangent_.rank_one_vector();
+      bool shifted = false;
       if (keep) {
         // A kept band may not carry the fresh rank-one part: then iterate again from this
         // d_(n+1), whose unchanged residual has the tangent refactored.
@@ -290,6 +289,10 @@ class NonlinearNewmarkIntegrator {
           solved = factor_.ComputeWithIndefiniteBand(jacobian_, scale, u);
           if (solved == Status::kOk) factor_.SolveInPlace(residual_);
         }
+        if (solved == Status::kNotPositiveDefinite) {
+          solved = SolveShifted(cm, ck, ct, scale, u);
+          shifted = solved == Status::kOk;
+        }
         if (solved != Status::kOk) return solved;
       }
       // d_(n+1) -= delta, a_(n+1) with it, and the sizes of both for the increment test.
@@ -302,13 +305,55 @@ class NonlinearNewmarkIntegrator {
         d_new_[i] = d;
         a_new_[i] = ca * (d - d_star_[i]);
       }
-      if (std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
+      // A shifted solve moves less than Newton would: its small increment proves nothing.
+      if (!shifted &&
+          std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
           settled(iteration)) {
         return Accept(h);
       }
     }
     return Status::kNotConverged;
   }
+
+  // Evaluates the force at d_new_ into r_ and tangent_. An iterate outside the force's domain
+  // (a gap closed under a 1/gap^n pressure) is pulled back along the last increment, which
+  // residual_ still holds, halving it up to 10 times; the first iterate, the predictor, has no
+  // increment to retreat along.
+  bool EvaluateWithin(int iteration, double ca) {
+    for (int retreat = 0;; ++retreat) {
+      r_.setZero();
+      tangent_.Clear();
+      if (force_.Evaluate(d_new_, r_, tangent_)) return true;
+      if (iteration == 1 || retreat == 10) return false;
+      residual_ *= 0.5;
+      d_new_ += residual_;
+      a_new_ = ca * (d_new_ - d_star_);
+    }
+  }
+
+  // Solves J delta = R with the mass term of J raised until J is definite, where J itself is
+  // not: inside a snap (the Casimir or electrostatic force overtaking the beam's stiffness near
+  // the substrate) the step's matrix with little mass in it turns indefinite. The raised mass
+  // is that of a shorter step, so the iteration creeps the way a shorter step would, but it
+  // solves this step's equations, whose solution exists where contact catches the beam; the step
+  // is cut only if that fails. Never kept for a later iteration.
+  Status SolveShifted(double cm, double ck, double ct, double scale, const Eigen::VectorXd& u) {
+    factor_valid_ = false;
+    for (double shift = cm / 64.0; shift <= kMaxMassShift * cm; shift *= 4.0) {
+      jacobian_.mutable_data() =
+          (cm + shift) * mass_.data() + ck * stiffness_.data() + ct * tangent_.band().data();
+      ++last_factorizations_;
+      if (factor_.Compute(jacobian_, scale, u) == Status::kOk) {
+        factor_.SolveInPlace(residual_);
+        return Status::kOk;
+      }
+    }
+    return Status::kNotPositiveDefinite;
+  }
+
+  // The largest mass shift of SolveShifted, as a multiple of the step's own mass term: that of a
+  // step 2^-10 as long, the depth of cutting it replaces.
+  static constexpr double kMaxMassShift = 1048576.0;
 
   // The rounding error of the residual's stiffness products, K d_mid and the stiffness-
   // proportional damping's K v_mid (100 elements at 100 us steps stalled at 7e-9 of the
