@@ -12,13 +12,14 @@
 #include "text_format.hpp"
 
 namespace cosmems::internal {
-namespace {
 
 nlohmann::ordered_json TimesJson(const LoopStats& s) {
   return {{"median", s.ComputeQuantileUs(0.5)},
           {"p99", s.ComputeQuantileUs(0.99)},
           {"max", s.ComputeQuantileUs(1.0)}};
 }
+
+namespace {
 
 // How long an Omni session lasts when the scene does not say [s].
 constexpr double kDefaultSessionS = 30.0;

@@ -13,6 +13,9 @@
 
 namespace cosmems::internal {
 
+/// A loop's tick times as JSON: {median, p99, max} in us.
+nlohmann::ordered_json TimesJson(const LoopStats& stats);
+
 /// What a haptic analysis reports, in SI (SCENES.md, haptic).
 struct HapticResults {
   LoopStats servo;    ///< the servo loop's figures

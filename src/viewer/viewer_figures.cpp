@@ -3,16 +3,10 @@
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "contact_report.hpp"
+#include "haptic_report.hpp"
+
 namespace cosmems::viewer {
-namespace {
-
-nlohmann::ordered_json TickJson(const LoopStats& s) {
-  return {{"median", s.ComputeQuantileUs(0.5)},
-          {"p99", s.ComputeQuantileUs(0.99)},
-          {"max", s.compute_max_us}};
-}
-
-}  // namespace
 
 void PrintFigures(const ViewerFigures& f, std::ostream& out) {
   out << f.scene << ": " << f.input << " stylus (" << f.device << "), " << f.width << "x"
@@ -49,17 +43,14 @@ void PrintFiguresJson(const ViewerFigures& f, std::ostream& out) {
   json["servo"] = {{"ticks", f.servo.ticks},
                    {"rate_hz", f.servo.rate_hz},
                    {"realtime", f.servo.realtime},
-                   {"tick_time_us", TickJson(f.servo)},
+                   {"tick_time_us", internal::TimesJson(f.servo)},
                    {"deadline_misses", f.servo.deadline_misses},
                    {"period_max_us", f.servo.period_max_us}};
   json["physics"] = {{"ticks", f.physics.ticks},
                      {"failed_ticks", f.failed_physics_ticks},
-                     {"tick_time_us", TickJson(f.physics)}};
+                     {"tick_time_us", internal::TimesJson(f.physics)}};
   json["contact_state"] = ToString(f.contact.state);
-  json["contact_events"] = {{"proximity_warnings", f.events.proximity_warnings},
-                            {"contacts", f.events.contacts},
-                            {"stuck_events", f.events.stuck},
-                            {"releases", f.events.releases}};
+  json["contact_events"] = internal::ContactEventsJson(f.events);
   json["realtime_note"] = f.realtime_note;
   json["screenshot"] = f.screenshot;
   out << json.dump() << "\n";

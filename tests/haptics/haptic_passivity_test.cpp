@@ -9,10 +9,8 @@
 #include <cmath>
 
 #include "cosmems/core/constants.hpp"
-#include "cosmems/haptics/built_in_specs.hpp"
-#include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
-#include "haptic_test_beam.hpp"
+#include "reference_touch.hpp"
 
 namespace cosmems {
 namespace {
@@ -30,19 +28,13 @@ class PressAndHold final : public Trajectory {
 };
 
 TEST(HapticPassivityTest, AHandHeldAgainstTheSubstrateGainsNoEnergyOver10Seconds) {
-  const BeamModel<2> model = test::HapticCantilever();
-  test::HapticSurface forces = test::MakeHapticSurface(model);
-  const double k_tip = test::ReferenceTipStiffness(), coupling = 25.0 * k_tip;
-  HapticBeam<2> beam(model, ProbeOptions{2e-6, coupling}, &forces, &forces.get<0>());
-  const DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
-  HapticLoopOptions options;
   // The coupling felt at half the device's renderable stiffness (350 N/m): the stiff contact.
-  options.scaling = test::ReferenceHandScaling(specs, coupling);
-  HapticLoop<2> loop(beam, options);
+  test::ReferenceTouch touch;
+  HapticLoop<2>& loop = touch.loop;
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
   scripted.hand = HandModel::kSpring;
-  scripted.specs = specs;
+  scripted.specs = touch.specs;
   ScriptedDevice device(std::make_unique<PressAndHold>(), scripted);
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);
   ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);

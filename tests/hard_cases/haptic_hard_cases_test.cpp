@@ -16,6 +16,7 @@
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptics/haptic_test_beam.hpp"
+#include "haptics/reference_touch.hpp"
 #include "hard_cases/hard_case_support.hpp"
 #include "scripted/table_trajectory.hpp"
 
@@ -90,20 +91,14 @@ constexpr double kRounding = 1e-12;
 
 TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   const auto [script, substeps, fails, recovers] = GetParam();
-  const BeamModel<2> model = test::HapticCantilever();
-  test::HapticSurface forces = test::MakeHapticSurface(model);
-  const double coupling = 25.0 * test::ReferenceTipStiffness();
   HapticPhysicsOptions physics;
   physics.substeps = substeps;
-  HapticBeam<2> beam(model, ProbeOptions{test::kProbeRadius, coupling}, &forces, &forces.get<0>(),
-                     {}, physics);
-  const DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
-  HapticLoopOptions options;
-  options.scaling = test::ReferenceHandScaling(specs, coupling);
-  HapticLoop<2> loop(beam, options);
+  test::ReferenceTouch touch(physics);
+  HapticBeam<2>& beam = touch.beam;
+  HapticLoop<2>& loop = touch.loop;
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
-  scripted.specs = specs;
+  scripted.specs = touch.specs;
   const std::vector<Eigen::Vector3d> points = Points(script);
   ScriptedDevice device(std::make_unique<TableTrajectory>(points, kRateHz), scripted);
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);
