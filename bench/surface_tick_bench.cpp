@@ -50,7 +50,8 @@ void BM_SurfaceTick(benchmark::State& state) {
   contact.adhesion_energy = 0.02;
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
       SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(model, CasimirPressure{}, GapSpan{kGap, 0.0, 200e-6}));
+      GapForce<2, CasimirPressure>(model, CasimirPressure{},
+                                   GapSpan{kGap, 0.0, 200e-6}.WithSeparation(contact.separation)));
   const double dt = 1e-3 / substeps / model.units().time;
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt);

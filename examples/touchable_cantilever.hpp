@@ -23,9 +23,10 @@ class TouchableCantilever {
   TouchableCantilever(const DeviceSpecs& specs, PhysicsThread physics)
       : model_(MakeStructure(StructureKind::kCantilever, kLength, Material{169e9, 2330.0, 0.22},
                              RectangularSection{20e-6, kThickness}, 20, 0)),
-        forces_(
-            SubstrateContact<2>(model_, Contact()),
-            GapForce<2, CasimirPressure>(model_, CasimirPressure{}, GapSpan{kGap, 0.0, kLength})) {
+        forces_(SubstrateContact<2>(model_, Contact()),
+                GapForce<2, CasimirPressure>(
+                    model_, CasimirPressure{},
+                    GapSpan{kGap, 0.0, kLength}.WithSeparation(Contact().separation))) {
     const double k_tip = 3.0 * 169e9 * (20e-6 * 8e-18 / 12.0) / (kLength * kLength * kLength);
     ProbeOptions probe{kThickness, 25.0 * k_tip};
     HapticPhysicsOptions physics_options;

@@ -47,9 +47,11 @@ inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
   contact.separation = 2e-8;
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
-  return HapticSurface(SubstrateContact<2>(model, contact),
-                       GapForce<2, CasimirPressure>(model, CasimirPressure{},
-                                                    GapSpan{kHapticGap, 0.0, kReferenceLength}));
+  return HapticSurface(
+      SubstrateContact<2>(model, contact),
+      GapForce<2, CasimirPressure>(
+          model, CasimirPressure{},
+          GapSpan{kHapticGap, 0.0, kReferenceLength}.WithSeparation(contact.separation)));
 }
 
 }  // namespace cosmems::test

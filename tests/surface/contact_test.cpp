@@ -3,9 +3,13 @@
 // the energy of an impact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <vector>
 
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
+#include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "force_differences.hpp"
@@ -30,6 +34,29 @@ LoadCase TipForce(double length, double fy) {
   LoadCase loads;
   loads.points.push_back({length, Eigen::Vector3d(0, fy, 0), Eigen::Vector3d::Zero()});
   return loads;
+}
+
+// The local gap of d along the beam (m): the Hermite cubic of each element sampled at `per`
+// points, from the model's own dofs, independently of SubstrateContact.
+std::vector<double> SampledGaps(const BeamModel<2>& model, const Eigen::VectorXd& d, double gap,
+                                int per) {
+  std::vector<double> gaps;
+  for (int e = 0; e < model.ElementCount(); ++e) {
+    const double h = model.elements()[e].properties().length;
+    std::array<double, 4> q{};
+    for (int node = 0; node < 2; ++node) {
+      const int w = model.dofs().Reduced(e + node, NodalDof::kUy);
+      const int r = model.dofs().Reduced(e + node, NodalDof::kRz);
+      q[2 * node] = w >= 0 ? d[w] : 0.0;
+      q[2 * node + 1] = r >= 0 ? h * d[r] : 0.0;
+    }
+    for (int i = 0; i <= per; ++i) {
+      const std::array<double, 4> n = HermiteShapes(static_cast<double>(i) / per);
+      const double w = n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3];
+      gaps.push_back(gap + w * model.units().length);
+    }
+  }
+  return gaps;
 }
 
 // A cantilever pushed by three times the tip force that closes the gap rests on its tip: the
@@ -82,6 +109,39 @@ TEST(ContactTest, DistributedLoadLaysTheBeamDownWithoutPenetration) {
   EXPECT_NEAR(summary.detached_length_m + summary.contact_length_m, length, 1e-12);
 }
 
+// A bridge of three elements pressed at midspan, inside its middle element, by five times the
+// force that closes the gap there (192 EI g / L^3): the nodes, at L/3 and 2L/3, never reach the
+// substrate, so only the points inside the element stop the beam. The midspan rests on the plane
+// and the cubic, sampled at 1000 points an element, nowhere goes through it by more than the
+// tolerance; Penetration() finds the same deepest place.
+TEST(ContactTest, BeamPressedBetweenNodesStopsWhereItIsPressed) {
+  const double length = test::kReferenceLength;
+  const BeamModel<2> model(MakeStructure(StructureKind::kBridge, length, test::Silicon(),
+                                         test::ReferenceSection(), 3, 0));
+  ContactOptions options;
+  options.gap = kReferenceGap;
+  SubstrateContact<2> contact(model, options);
+  const double closing = 192.0 * BendingStiffness() * kReferenceGap / std::pow(length, 3);
+  LoadCase loads;
+  loads.points.push_back(
+      {0.5 * length, Eigen::Vector3d(0, -5.0 * closing, 0), Eigen::Vector3d::Zero()});
+  const NonlinearStaticSolution solution = SolveNonlinearStatic(model, contact, loads);
+  ASSERT_EQ(solution.status, Status::kOk);
+  const std::vector<double> gaps = SampledGaps(model, solution.displacement, kReferenceGap, 1000);
+  const double lowest = *std::min_element(gaps.begin(), gaps.end());
+  EXPECT_GE(lowest, -contact.tolerance());
+  EXPECT_LE(gaps[1001 + 500], contact.tolerance());  // the midspan is on the plane
+  EXPECT_NEAR(contact.Penetration(solution.displacement), std::max(0.0, -lowest),
+              1e-6 * contact.tolerance());
+  EXPECT_EQ(contact.Summary().state, ContactState::kContact);
+  EXPECT_EQ(contact.events().contacts, 1);
+}
+
+// The force and tangent against differences of the augmented Lagrangian's energy,
+// sum max(0, lambda_i - k g_i)^2 / (2k) over the points that hold: every node, and the quarter
+// points of the elements that went through the plane. Settle() at the state places those points
+// and sets lambda_i = -k g_i where the penetration exceeds the tolerance; the test forms the gaps
+// of the nodes and quarter points from the Hermite cubics itself.
 TEST(ContactTest, TangentMatchesDifferencesOfThePenaltyEnergy) {
   const BeamModel<2> model = Cantilever(test::kReferenceLength, 6);
   ContactOptions options;
@@ -89,23 +149,50 @@ TEST(ContactTest, TangentMatchesDifferencesOfThePenaltyEnergy) {
   options.penalty = 100.0;
   SubstrateContact<2> contact(model, options);
   const int n = model.FreeDofCount();
-  // Half the nodes well through the plane, half well above it: away from the kink at g = 0.
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
   const double gap = kReferenceGap / model.units().length;
+  const double h = model.elements()[0].properties().length;
+  // Nodes alternately well through the plane and well above it, turned so that the elements dip
+  // through it between nodes above it: every point away from the kink at g = 0.
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
   for (int node = 1; node <= 6; ++node) {
     d[model.dofs().Reduced(node, NodalDof::kUy)] = node % 2 ? -1.5 * gap : -0.5 * gap;
+    d[model.dofs().Reduced(node, NodalDof::kRz)] = (node % 2 ? 1.0 : -1.0) * 2.5 * gap / h;
   }
-  Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
-  ForceTangent tangent(n, model.Stiffness().bandwidth());
-  ASSERT_TRUE(contact.Evaluate(d, r, tangent));
-  const double k = tangent.band()(model.dofs().Reduced(1, NodalDof::kUy),
-                                  model.dofs().Reduced(1, NodalDof::kUy));
-  // The energy of the springs: k/2 (min(g, 0))^2 at each node.
+  double k = 0.0;
+  for (int node = 1; node <= 6; ++node) {
+    const int w = model.dofs().Reduced(node, NodalDof::kUy);
+    k = std::max(k, options.penalty * model.Stiffness()(w, w));
+  }
+  // Each point's gap as an affine function of x: the nodes', then the quarter points'.
+  auto gaps = [&](const Eigen::VectorXd& x) {
+    std::vector<double> out;
+    for (int node = 1; node <= 6; ++node)
+      out.push_back(gap + x[model.dofs().Reduced(node, NodalDof::kUy)]);
+    for (double g : SampledGaps(model, x, kReferenceGap, 4))
+      out.push_back(g / model.units().length);
+    return out;
+  };
+  const std::vector<double> at_state = gaps(d);
+  std::vector<double> lambda(at_state.size(), 0.0);
+  std::vector<bool> holds(at_state.size(), true);
+  const double tolerance = contact.tolerance() / model.units().length;
+  int inner_held = 0;
+  for (std::size_t i = 0; i < at_state.size(); ++i) {
+    ASSERT_GT(std::abs(at_state[i]), 1e-2 * gap) << i;
+    const bool inner = i >= 6;
+    // SampledGaps repeats the nodes at xi = 0 and 1: only xi = 1/4, 1/2, 3/4 are points.
+    if (inner && ((i - 6) % 5 == 0 || (i - 6) % 5 == 4)) holds[i] = false;
+    if (inner && holds[i]) holds[i] = -at_state[i] > tolerance;
+    if (inner && holds[i]) ++inner_held;
+    if (-at_state[i] > tolerance) lambda[i] = -k * at_state[i];
+  }
+  ASSERT_GE(inner_held, 3);
+  EXPECT_FALSE(contact.Settle(d));
   auto energy = [&](const Eigen::VectorXd& x) {
+    const std::vector<double> g = gaps(x);
     double sum = 0.0;
-    for (int node = 1; node <= 6; ++node) {
-      const double g = gap + x[model.dofs().Reduced(node, NodalDof::kUy)];
-      sum += 0.5 * k * std::pow(std::min(g, 0.0), 2);
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      if (holds[i]) sum += std::pow(std::max(0.0, lambda[i] - k * g[i]), 2) / (2.0 * k);
     }
     return sum;
   };
@@ -131,7 +218,13 @@ ContactSummary Release(const BeamModel<2>& model, double gamma) {
   contact.StickAll();
   const NonlinearStaticSolution solution = SolveNonlinearStatic(model, contact, LoadCase{});
   EXPECT_EQ(solution.status, Status::kOk);
-  EXPECT_LE(contact.Penetration(solution.displacement), contact.tolerance());
+  // Adhesion holds the nodes, and between two stuck nodes the cubic is free to dip: at most as
+  // an element pinned at its ends under the moment at the edge of contact, kappa h^2 / (9 sqrt 3),
+  // kappa = sqrt(2 b Gamma / EI) (G = M^2 / 2EIb = Gamma).
+  const double h = model.elements()[0].properties().length * model.units().length;
+  const double kappa = std::sqrt(2.0 * test::ReferenceSection().width * gamma / BendingStiffness());
+  const double dip = kappa * h * h / (9.0 * std::sqrt(3.0));
+  EXPECT_LE(contact.Penetration(solution.displacement), contact.tolerance() + dip);
   return contact.Summary();
 }
 

@@ -27,7 +27,8 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
   contact.adhesion_energy = 0.02;
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>, SqueezeFilm<2>> forces(
       SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(model, CasimirPressure{}, GapSpan{gap, 0.0, length}),
+      GapForce<2, CasimirPressure>(model, CasimirPressure{},
+                                   GapSpan{gap, 0.0, length}.WithSeparation(contact.separation)),
       SqueezeFilm<2>(model, SqueezeFilmOptions{}, gap));
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0),

@@ -19,11 +19,10 @@ struct HapticPhysicsOptions {
   double tick_s = 1e-3;  ///< simulated time per Advance() (the servo period)
   /// Implicit steps per tick. The reference cantilever's first mode (68.8 kHz) is far above the
   /// servo rate, so the steps do not resolve it whatever their number: the hand feels the
-  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp: medians of 8, 16 and
-  /// 60 us for 1, 2 and 10 steps, and in the tick that snaps the tip on, whose step matrix turns
-  /// indefinite, 234 us, 155 us and 1.2 ms); 10 is the default because 2 fail two ticks where a
-  /// stiff coupling lays the beam down along its length (HapticBeamTest), which 10 take.
-  int substeps = 10;
+  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp with contact, stiction and
+  /// the Casimir force: medians of 7, 19 and 103 us for 1, 2 and 10 steps, largest ticks of
+  /// 236, 166 us and 1.2 ms); 2 take every tick of the tests' lay-downs and peels.
+  int substeps = 2;
   /// Generalised-alpha's spectral radius: 0 annihilates the unresolved vibrations (the hand
   /// feels the quasi-static beam, as it would the real one) and adds no energy at impacts.
   double rho_inf = 0.0;

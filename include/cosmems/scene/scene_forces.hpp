@@ -27,9 +27,13 @@ class SceneForces {
       stretching_ = std::make_unique<StretchingForce<Dim>>(model);
       structural_.Add(*stretching_);
     }
+    // The gap pressures see no nearer gap than the one contact stops the faces at.
+    double separation = 0.0;
     if (e.HasContact()) {
-      contact_ = std::make_unique<SubstrateContact<Dim>>(model, MakeContactOptions(scene));
+      const ContactOptions contact = MakeContactOptions(scene);
+      contact_ = std::make_unique<SubstrateContact<Dim>>(model, contact);
       structural_.Add(*contact_);
+      separation = contact.separation;
     }
     const double length = scene.structure.length;
     const double gap = scene.structure.gap.value_or(0.0);
@@ -45,13 +49,15 @@ class SceneForces {
         scene.analysis.type != AnalysisType::kPullin) {
       const ElectrostaticEffect& s = *e.electrostatic;
       AddPressure(model, ElectrostaticPressure{*s.voltage, scene.structure.width, s.fringing},
-                  GapSpan{gap, s.electrode_start.value_or(0.0), s.electrode_end.value_or(length)});
+                  GapSpan{gap, s.electrode_start.value_or(0.0), s.electrode_end.value_or(length)}
+                      .WithSeparation(separation));
     }
     if (IsOn(e.casimir)) {
-      AddPressure(model, CasimirPressure{}, GapSpan{gap, 0.0, length});
+      AddPressure(model, CasimirPressure{}, GapSpan{gap, 0.0, length}.WithSeparation(separation));
     }
     if (IsOn(e.van_der_waals)) {
-      AddPressure(model, VanDerWaalsPressure{*e.van_der_waals->hamaker}, GapSpan{gap, 0.0, length});
+      AddPressure(model, VanDerWaalsPressure{*e.van_der_waals->hamaker},
+                  GapSpan{gap, 0.0, length}.WithSeparation(separation));
     }
     for (NonlinearForce* f :
          {static_cast<NonlinearForce*>(&structural_), static_cast<NonlinearForce*>(&pressures_)}) {

@@ -15,8 +15,9 @@ namespace cosmems {
 ///   r(d) = int N_w^T b p(gap + w) dx,   dr/dd = int N_w^T b p'(gap + w) N_w dx,
 /// N_w the Hermite shape functions of u_y (the static ones: the power-series terms are
 /// frequency corrections). p' < 0: the tangent softens the beam, which is what makes it pull in.
-/// The quadrature adapts to the gap (GapIntegral); a state whose gap closes anywhere is outside
-/// the force's domain: Evaluate() returns false. Evaluate() allocates nothing.
+/// The quadrature adapts to the gap (GapIntegral); below the contact plane (GapSpan::separation)
+/// the pressure keeps its value on it; without contact, a state whose gap closes anywhere is
+/// outside the force's domain: Evaluate() returns false. Evaluate() allocates nothing.
 template <int Dim, typename Pressure>
 class GapForce final : public NonlinearForce {
  public:
@@ -29,7 +30,7 @@ class GapForce final : public NonlinearForce {
                                       const std::array<double, 4>& n, double gap, double weight) {
       const double w = weight * s.width_m;
       const double p = w * pressure_.Value(gap);
-      const double dp = w * pressure_.Slope(gap) * length_m;
+      const double dp = integral_.Held(gap) ? 0.0 : w * pressure_.Slope(gap) * length_m;
       for (int i = 0; i < 4; ++i) {
         if (s.dof[i] < 0) continue;
         force[s.dof[i]] += n[i] * p;

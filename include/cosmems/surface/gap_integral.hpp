@@ -24,6 +24,20 @@ struct GapSpan {
   int points = 4;
   /// An interval is halved until its largest gap is at most this multiple of its smallest.
   double gap_ratio = 1.25;
+  /// m: where contact is declared, how close the faces come (ContactOptions::separation). Nearer
+  /// than this the effect sees this gap: what lies below the contact plane is the penetration the
+  /// contact's penalty allows while Newton iterates, not an approach, and a pressure growing like
+  /// 1/d^n through it would outgrow the penalty's stiffness and turn each iterate that touches
+  /// into one that lifts off (the reference cantilever's tip, pressed onto the substrate with the
+  /// Casimir force at 20 nm, cycled so at every cut of its step). 0: no contact, the gap closes.
+  double separation = 0.0;
+
+  /// This span with contact stopping the faces at `separation_m`.
+  GapSpan WithSeparation(double separation_m) const {
+    GapSpan out = *this;
+    out.separation = separation_m;
+    return out;
+  }
 };
 
 /// The quadrature of an effect that depends on the local gap d(x) = gap + w(x) (w = u_y of the
@@ -38,8 +52,9 @@ struct GapSpan {
 /// halved, recursively, until the gap varies by at most GapSpan::gap_ratio over each interval
 /// (judged at its ends and midpoint), and each interval gets the Gauss rule: the error then no
 /// longer depends on how close the substrate is (the defaults: 2e-7 of the Casimir force at half
-/// the gap, 8e-9 and 2e-9 with 1 % and 1e-4 of it left). A state whose gap closes anywhere
-/// (d <= 0) is outside the effect's domain: Integrate() returns false. Allocates nothing.
+/// the gap, 8e-9 and 2e-9 with 1 % and 1e-4 of it left). The gap is held at GapSpan::separation
+/// from below (Held()); without it, a state whose gap closes anywhere (d <= 0) is outside the
+/// effect's domain: Integrate() returns false. Allocates nothing.
 template <int Dim>
 class GapIntegral {
  public:
@@ -66,7 +81,9 @@ class GapIntegral {
     const double length = model.description().Length() * (1.0 + 1e-12);
     RequireWithin("electrode_start", span.start, 0.0, length);
     RequireWithin("electrode_end", span.end, span.start, length);
+    RequireWithin("separation", span.separation, 0.0, 0.5 * span.gap);
     gap_ = span.gap / u.length;
+    separation_ = span.separation / u.length;
     for (int e = 0; e < model.ElementCount(); ++e) {
       const double h = model.elements()[e].properties().length;
       const double x0 = model.NodeX()[e] * u.length;
@@ -124,21 +141,26 @@ class GapIntegral {
 
   /// Metres per internal length unit.
   double length_m() const { return length_m_; }
+  /// Whether a gap Integrate() passed [m] is the contact's separation, which holds it from below:
+  /// the effect is constant there, its derivative in the displacement zero.
+  bool Held(double gap_m) const { return gap_m <= separation_ * length_m_; }
 
  private:
   static int Index(int node, NodalDof dof) {
     return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
   }
 
+  // The local gap, at least the separation (NaN stays NaN).
   double Gap(const std::array<double, 4>& q, double xi) const {
     const std::array<double, 4> n = HermiteShapes(xi);
-    return gap_ + n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3];
+    const double gap = gap_ + n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3];
+    return gap < separation_ ? separation_ : gap;
   }
 
   double length_m_;
   double ratio_;
   GaussLegendre rule_;
-  double gap_ = 0.0;  ///< internal units
+  double gap_ = 0.0, separation_ = 0.0;  ///< internal units
   std::vector<Segment> segments_;
 };
 

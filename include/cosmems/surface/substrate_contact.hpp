@@ -3,11 +3,15 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/core/nonlinear_force.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
@@ -28,20 +32,26 @@ struct ContactOptions {
   double penalty = 1e4;
 };
 
-/// The substrate as a unilateral constraint on the beam's nodes, with adhesion (stiction).
+/// The substrate as a unilateral constraint on the beam, with adhesion (stiction).
 ///
-/// Contact: the local gap g_i = gap + w_i - separation at each free node must stay >= 0. The
-/// reaction is p_i = max(0, lambda_i - k g_i) (augmented Lagrangian): during Newton the
-/// multipliers lambda are fixed and the force is a stiff spring on the nodes pressed into the
-/// substrate; once Newton converges (Settle) a node that penetrates by more than the tolerance
-/// takes lambda_i = p_i and Newton runs again. With k = 1e4 times the beam's nodal stiffness each
-/// update cuts the penetration about 1e4-fold, so a converged state meets the tolerance after one
-/// update or none, and the penalty's error is not left in the answer. The constraint acts at the
-/// nodes: between two nodes lying on the substrate the beam's cubic may dip below it by a small
-/// fraction of the nodal rotation times the element length. With a surface pressure p(d) the
-/// separation must keep its stiffness b |p'| below the elements' bending stiffness between the
-/// nodes, or nothing holds the beam there: the Casimir pressure at 2 nm does not (10 um
-/// elements), at 20 nm it does; the solvers then report a matrix that is not positive definite.
+/// Contact: the local gap g = gap + w - separation must stay >= 0 along the beam, w the Hermite
+/// cubic of u_y. It is held at points: each free node, and the quarter points of each element
+/// that goes through the plane between its nodes. At a point i, g_i = gap + N_i d, the reaction
+/// is p_i = max(0, lambda_i - k g_i) (augmented Lagrangian): during Newton the multipliers lambda
+/// and the points holding are fixed and the force is a stiff spring k N_i^T N_i on the points
+/// pressed into the substrate; once Newton converges (Settle), a point that penetrates by more
+/// than the tolerance, or still pushes while clear of the plane by more than it, takes
+/// lambda_i = p_i (an element's point starts to hold), and Newton runs again. An element's point is
+/// let go once it lifts clear of the plane: one kept on an element lying flat would sit on the kink
+/// of max(0, .) and only slow Newton. With k = 1e4 times the beam's nodal stiffness each update
+/// cuts the penetration about 1e4-fold, so a converged state meets the tolerance at every point
+/// after an update or two, and the penalty's error is not left in the answer: a beam pressed
+/// between two nodes of a coarse mesh stops where it is pressed, not where its nodes are. Between
+/// the points the cubic may still dip a little further (at most (h/4)^2/8 of its curvature;
+/// Penetration() measures the deepest place). With a surface pressure p(d) the separation must keep
+/// its stiffness b |p'| below what holds the beam between the points, or the step matrix turns
+/// indefinite: the Casimir pressure at 2 nm does not (10 um elements), at 20 nm it does. The gap
+/// pressures stop growing at the contact plane (GapSpan::separation).
 ///
 /// Stiction: a node pressed onto the substrate at a converged state sticks, and its constraint
 /// becomes bilateral (the reaction may pull). Adhesion is released by Griffith's energy balance:
@@ -55,8 +65,11 @@ struct ContactOptions {
 /// (K with the contact springs), so in dynamics the criterion is the quasi-static one. One node
 /// peels per Settle, the one furthest past the balance, and Newton re-converges before the next.
 ///
-/// Impacts are inelastic at the nodes: at the end of each time step the velocity and the
-/// acceleration of the nodes touching the substrate and moving into it (of every stuck node) are
+/// Adhesion acts at the nodes; the points between them only stop the beam, in the elements no
+/// stuck node holds.
+///
+/// Impacts are inelastic: at the end of each time step the velocity and the acceleration of the
+/// points touching the substrate and moving into it (of every stuck node) are
 /// removed by the projection that is orthogonal in the mass metric, x -= M^-1 C^T (C M^-1 C^T)^-1
 /// C x, which can only lower the kinetic energy. Without it the average-acceleration rule sends
 /// the nodes back off the substrate with more energy than they came with: the force that stopped
@@ -83,22 +96,50 @@ class SubstrateContact final : public NonlinearForce {
     tolerance_ = (options.tolerance > 0.0 ? options.tolerance : 1e-4 * options.gap) / u.length;
     proximity_ = (options.proximity > 0.0 ? options.proximity : 0.1 * options.gap) / u.length;
     double largest = 0.0;
+    std::vector<int> point_of_node(static_cast<std::size_t>(model.NodeCount()), -1);
     for (int node = 0; node < model.NodeCount(); ++node) {
       const int w = model.dofs().Reduced(node, NodalDof::kUy);
       if (w < 0) continue;  // a support never reaches the substrate
+      point_of_node[static_cast<std::size_t>(node)] = static_cast<int>(points_.size());
       const int e = std::min(node, model.ElementCount() - 1);
-      nodes_.push_back(
-          {w, node, model.NodeX()[node], model.description().elements[e].section.width / u.length});
+      Point point;
+      point.dof[0] = w;
+      point.shape[0] = 1.0;
+      point.node = node;
+      point.x = model.NodeX()[node];
+      point.width = model.description().elements[e].section.width / u.length;
+      points_.push_back(point);
       largest = std::max(largest, stiffness_(w, w));
+    }
+    node_count_ = points_.size();
+    for (int e = 0; e < model.ElementCount(); ++e) {
+      Point point;
+      for (int node = 0; node < 2; ++node) {
+        point.dof[2 * node] = model.ElementDof(e, Index(node, NodalDof::kUy));
+        point.dof[2 * node + 1] = model.ElementDof(e, Index(node, NodalDof::kRz));
+      }
+      if (point.dof[0] < 0 && point.dof[2] < 0) continue;  // between two supports
+      point.h = model.elements()[e].properties().length;
+      point.x = model.NodeX()[e];
+      point.ends = {point_of_node[static_cast<std::size_t>(e)],
+                    point_of_node[static_cast<std::size_t>(e) + 1]};
+      for (double xi : kInnerPoints) {
+        const std::array<double, 4> n = HermiteShapes(xi);
+        point.shape = {n[0], point.h * n[1], n[2], point.h * n[3]};
+        points_.push_back(point);
+      }
     }
     penalty_ = options.penalty * largest;
     length_ = model.NodeX().back();
-    const std::size_t m = nodes_.size();
+    const std::size_t m = points_.size();
     lambda_.assign(m, 0.0);
     committed_lambda_.assign(m, 0.0);
     stuck_.assign(m, 0);
     committed_stuck_.assign(m, 0);
-    node_state_.assign(m, ContactState::kFree);
+    placed_.assign(m, 1);  // the nodes' points always; the elements' when they penetrate
+    std::fill(placed_.begin() + static_cast<std::ptrdiff_t>(node_count_), placed_.end(), 0);
+    committed_placed_ = placed_;
+    node_state_.assign(node_count_, ContactState::kFree);
     springs_ = stiffness_;
     unit_ = Eigen::VectorXd::Zero(stiffness_.size());
     compliance_.Compute(springs_);  // sizes the factor's buffers, so that Settle() allocates none
@@ -111,38 +152,61 @@ class SubstrateContact final : public NonlinearForce {
   }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      const double g = gap_ + d[nodes_[k].w];
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      if (!Holds(k)) continue;
+      const Point& point = points_[k];
+      const double g = Gap(point, d);
       if (!std::isfinite(g)) return false;
       const double p = Reaction(k, g);
       if (!stuck_[k] && p <= 0.0) continue;
-      force[nodes_[k].w] -= p;
-      tangent.band().Add(nodes_[k].w, nodes_[k].w, penalty_);
+      for (int a = 0; a < 4; ++a) {
+        if (point.dof[a] < 0) continue;
+        force[point.dof[a]] -= p * point.shape[a];
+        for (int b = a; b < 4; ++b) {
+          if (point.dof[b] >= 0) {
+            tangent.band().Add(point.dof[a], point.dof[b],
+                               penalty_ * point.shape[a] * point.shape[b]);
+          }
+        }
+      }
     }
     return true;
   }
 
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {  // the multipliers' update
-      const double g = gap_ + d[nodes_[k].w];
+    for (std::size_t k = 0; k < points_.size(); ++k) {  // the multipliers' update
+      const double g = Gap(points_[k], d);
+      if (-g > tolerance_) placed_[k] = 1;  // an element's point that went through starts to hold
+      if (!Holds(k)) continue;
+      // Through the plane, or (unilateral) still pushing while clear of it by more than the
+      // tolerance: a multiplier from a deeper iterate must not hold the beam up off the plane.
+      const bool clear_but_pushing = !stuck_[k] && g > tolerance_ && Reaction(k, g) > 0.0;
       const double violation = stuck_[k] ? std::abs(g) : -g;
-      if (violation > tolerance_) {
+      if (violation > tolerance_ || clear_but_pushing) {
         lambda_[k] = Reaction(k, g);
         settled = false;
       }
     }
     if (!settled || !options_.stiction) return settled;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {  // pressed nodes stick: same equilibrium
-      if (Reaction(k, gap_ + d[nodes_[k].w]) > 0.0) stuck_[k] = 1;
+    for (std::size_t k = 0; k < node_count_; ++k) {  // pressed nodes stick: same equilibrium
+      if (Reaction(k, Gap(points_[k], d)) > 0.0) stuck_[k] = 1;
     }
     return !Peel(d);
   }
 
   void Commit(const Eigen::VectorXd& d) override {
     ContactState beam = ContactState::kFree;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      const double g = gap_ + d[nodes_[k].w];
+    for (std::size_t k = node_count_; k < points_.size(); ++k) {
+      if (Holds(k) && Touching(k, Gap(points_[k], d))) {
+        beam = ContactState::kContact;
+      } else {  // lifted clear or adhered: let go, not to sit on the plane's kink unneeded
+        placed_[k] = 0;
+        lambda_[k] = 0.0;
+      }
+    }
+    for (std::size_t k = 0; k < node_count_; ++k) {
+      const double g = Gap(points_[k], d);
       ContactState& s = node_state_[k];
       if (stuck_[k]) {
         s = ContactState::kStuck;
@@ -162,31 +226,38 @@ class SubstrateContact final : public NonlinearForce {
     state_ = beam;
     committed_lambda_ = lambda_;  // equal sizes: copies without allocating
     committed_stuck_ = stuck_;
+    committed_placed_ = placed_;
   }
 
   void Revert() override {
     lambda_ = committed_lambda_;
     stuck_ = committed_stuck_;
+    placed_ = committed_placed_;
   }
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     int count = 0;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      const int w = nodes_[k].w;
-      if (stuck_[k] || (Touching(k, gap_ + d[w]) && v[w] < 0.0)) active_[count++] = w;
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      if (!Holds(k)) continue;
+      if (stuck_[k] || (Touching(k, Gap(points_[k], d)) && Along(points_[k], v) < 0.0)) {
+        active_[count++] = static_cast<int>(k);
+      }
     }
     if (count == 0 || mass_factor_.info() != Status::kOk) return;
-    // M^-1 C^T and the factor of C M^-1 C^T depend on the held nodes alone: a stuck zone held
+    // M^-1 C^T and the factor of C M^-1 C^T depend on the held points alone: a stuck zone held
     // step after step reuses them.
     if (count != held_ ||
         !std::equal(active_.begin(), active_.begin() + count, held_set_.begin())) {
       held_ = 0;
       for (int j = 0; j < count; ++j) {
+        const Point& point = points_[active_[j]];
         auto column = columns_.col(j);
         column.setZero();
-        column[active_[j]] = 1.0;
+        for (int b = 0; b < 4; ++b) {
+          if (point.dof[b] >= 0) column[point.dof[b]] = point.shape[b];
+        }
         mass_factor_.SolveInPlace(column);
-        for (int i = 0; i < count; ++i) schur_(i, j) = column[active_[i]];
+        for (int i = 0; i < count; ++i) schur_(i, j) = Along(points_[active_[i]], column);
       }
       Eigen::Ref<Eigen::MatrixXd> schur = schur_.topLeftCorner(count, count);
       Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(schur);  // in place: allocates nothing
@@ -197,7 +268,7 @@ class SubstrateContact final : public NonlinearForce {
     const auto lower = schur_.topLeftCorner(count, count).triangularView<Eigen::Lower>();
     for (Eigen::VectorXd* x : {&v, &a}) {
       auto m = multipliers_.head(count);
-      for (int j = 0; j < count; ++j) m[j] = (*x)[active_[j]];
+      for (int j = 0; j < count; ++j) m[j] = Along(points_[active_[j]], *x);
       lower.solveInPlace(m);
       lower.adjoint().solveInPlace(m);
       x->noalias() -= columns_.leftCols(count) * m;
@@ -211,6 +282,8 @@ class SubstrateContact final : public NonlinearForce {
     std::fill(lambda_.begin(), lambda_.end(), 0.0);
     std::fill(stuck_.begin(), stuck_.end(), 0);
     std::fill(node_state_.begin(), node_state_.end(), ContactState::kFree);
+    std::fill(placed_.begin() + static_cast<std::ptrdiff_t>(node_count_), placed_.end(), 0);
+    committed_placed_ = placed_;
     committed_lambda_ = lambda_;
     committed_stuck_ = stuck_;
     state_ = ContactState::kFree;
@@ -219,7 +292,7 @@ class SubstrateContact final : public NonlinearForce {
   /// Every free node stuck to the substrate, as after the beam was pressed down all along (the
   /// start of a release analysis): solve, and the adhesion peels what it cannot hold.
   void StickAll() {
-    std::fill(stuck_.begin(), stuck_.end(), 1);
+    std::fill(stuck_.begin(), stuck_.begin() + static_cast<std::ptrdiff_t>(node_count_), 1);
     committed_stuck_ = stuck_;
   }
 
@@ -229,14 +302,18 @@ class SubstrateContact final : public NonlinearForce {
   /// pressed, and a surface pressure alone would make the first Newton matrix indefinite).
   Eigen::VectorXd PressedDisplacement() const {
     Eigen::VectorXd d = Eigen::VectorXd::Zero(stiffness_.size());
-    for (const Node& node : nodes_) d[node.w] = -gap_ - tolerance_;
+    for (std::size_t k = 0; k < node_count_; ++k) d[points_[k].dof[0]] = -gap_ - tolerance_;
     return d;
   }
 
-  /// The largest penetration of the contact plane at the nodes of d [m] (0 when none).
+  /// The largest penetration of the contact plane anywhere along the beam at d [m] (0 when none):
+  /// at the nodes and at the deepest point of each element's cubic.
   double Penetration(const Eigen::VectorXd& d) const {
     double deepest = 0.0;
-    for (const Node& node : nodes_) deepest = std::max(deepest, -(gap_ + d[node.w]));
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      const double g = k < node_count_ ? Gap(points_[k], d) : DeepestGap(points_[k], d);
+      deepest = std::max(deepest, -g);
+    }
     return deepest * units_.length;
   }
 
@@ -245,11 +322,11 @@ class SubstrateContact final : public NonlinearForce {
     ContactSummary out;
     out.state = state_;
     double first = -1.0;
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    for (std::size_t k = 0; k < node_count_; ++k) {
       if (node_state_[k] < ContactState::kContact) continue;
-      if (first < 0.0) first = nodes_[k].x;
+      if (first < 0.0) first = points_[k].x;
       if (k > 0 && Adjacent(k - 1, k) && node_state_[k - 1] >= ContactState::kContact) {
-        out.contact_length_m += (nodes_[k].x - nodes_[k - 1].x) * units_.length;
+        out.contact_length_m += (points_[k].x - points_[k - 1].x) * units_.length;
       }
     }
     out.detached_length_m = (first < 0.0 ? length_ : first) * units_.length;
@@ -258,19 +335,94 @@ class SubstrateContact final : public NonlinearForce {
   const ContactEvents& events() const { return events_; }
   /// The number of nodes that can touch (the free ones), and the state of each at the last
   /// committed step, from the first support on.
-  int NodeCount() const { return static_cast<int>(nodes_.size()); }
-  ContactState NodeState(int k) const { return node_state_.at(k); }
-  double NodeX(int k) const { return nodes_.at(k).x * units_.length; }  ///< m
+  int NodeCount() const { return static_cast<int>(node_count_); }
+  ContactState NodeState(int k) const { return node_state_[Checked(k)]; }
+  double NodeX(int k) const { return points_[Checked(k)].x * units_.length; }  ///< m
   /// The penetration accepted [m], for tests and reports.
   double tolerance() const { return tolerance_ * units_.length; }
 
  private:
-  struct Node {
-    int w;         ///< reduced index of u_y
-    int node;      ///< node number along the beam
-    double x;      ///< internal units
-    double width;  ///< internal units
+  // A point the constraint holds: g = gap + shape . d[dof]. The nodes' first (u_y alone), then
+  // those inside the elements that can touch (the Hermite cubic of u_y and h theta_z at a fixed
+  // xi), each holding while placed_.
+  struct Point {
+    std::array<int, 4> dof{-1, -1, -1, -1};  ///< reduced indices (-1: supported)
+    std::array<double, 4> shape{};
+    int node = -1;       ///< node number along the beam (nodes)
+    double x = 0.0;      ///< internal units (nodes; an element's first node for its points)
+    double width = 0.0;  ///< internal units (nodes)
+    double h = 0.0;      ///< the element's length, internal units (elements)
+    std::array<int, 2> ends{-1, -1};  ///< the element's nodes' points (-1: a support)
   };
+
+  // Whether point k holds: a node's always; an element's once placed, unless adhesion holds the
+  // element at a node (a stuck node holds it both ways, and points between two stuck nodes would
+  // hold the cubic at five places with four unknowns, whose multipliers never settle).
+  bool Holds(std::size_t k) const {
+    if (k < node_count_) return true;
+    if (!placed_[k]) return false;
+    for (int end : points_[k].ends) {
+      if (end >= 0 && stuck_[static_cast<std::size_t>(end)]) return false;
+    }
+    return true;
+  }
+
+  // Where an element is held between its nodes: its quarter points. A point held fixed never
+  // moves its multiplier to where it does not belong (a point following the cubic's deepest place
+  // pushed the element down elsewhere, and the stuck cantilever's release never settled).
+  static constexpr std::array<double, 3> kInnerPoints = {0.25, 0.5, 0.75};
+
+  // k as a node's point, or std::out_of_range.
+  std::size_t Checked(int k) const {
+    if (k < 0 || static_cast<std::size_t>(k) >= node_count_) {
+      throw std::out_of_range("contact node " + std::to_string(k) + " of " +
+                              std::to_string(node_count_));
+    }
+    return static_cast<std::size_t>(k);
+  }
+
+  static int Index(int node, NodalDof dof) {
+    return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
+  }
+
+  static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
+    double sum = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      if (point.dof[a] >= 0) sum += point.shape[a] * x[point.dof[a]];
+    }
+    return sum;
+  }
+  double Gap(const Point& point, const Eigen::VectorXd& d) const { return gap_ + Along(point, d); }
+
+  // The gap where an element's cubic (that of any of its points) comes nearest the substrate
+  // inside the element; +inf when the cubic has no minimum there (the nodes hold its ends).
+  double DeepestGap(const Point& point, const Eigen::VectorXd& d) const {
+    std::array<double, 4> q{};  // w1, h theta1, w2, h theta2
+    for (int a = 0; a < 4; ++a) {
+      if (point.dof[a] >= 0) q[a] = (a % 2 ? point.h : 1.0) * d[point.dof[a]];
+    }
+    // dw/dxi = A xi^2 + B xi + C, from the Hermite cubics' derivatives.
+    const double A = 6.0 * q[0] + 3.0 * q[1] - 6.0 * q[2] + 3.0 * q[3];
+    const double B = -6.0 * q[0] - 4.0 * q[1] + 6.0 * q[2] - 2.0 * q[3];
+    const double C = q[1];
+    double best = std::numeric_limits<double>::infinity();
+    auto consider = [&](double xi) {
+      if (!(xi > 0.0 && xi < 1.0) || 2.0 * A * xi + B <= 0.0) return;  // not an inner minimum
+      const std::array<double, 4> n = HermiteShapes(xi);
+      best = std::min(best, gap_ + n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3]);
+    };
+    if (A == 0.0) {
+      if (B != 0.0) consider(-C / B);
+      return best;
+    }
+    const double discriminant = B * B - 4.0 * A * C;
+    if (discriminant < 0.0) return best;
+    // The roots without cancellation.
+    const double t = -0.5 * (B + std::copysign(std::sqrt(discriminant), B));
+    if (t != 0.0) consider(C / t);
+    consider(t / A);
+    return best;
+  }
 
   double Reaction(std::size_t k, double g) const {
     const double p = lambda_[k] - penalty_ * g;
@@ -280,30 +432,32 @@ class SubstrateContact final : public NonlinearForce {
   // Pressed onto the substrate, or lying on it within the tolerance.
   bool Touching(std::size_t k, double g) const { return Reaction(k, g) > 0.0 || g <= tolerance_; }
 
-  bool Adjacent(std::size_t a, std::size_t b) const { return nodes_[b].node == nodes_[a].node + 1; }
+  bool Adjacent(std::size_t a, std::size_t b) const {
+    return points_[b].node == points_[a].node + 1;
+  }
 
   // Releases the pulled stuck node whose release frees the most energy per area beyond Gamma;
   // returns whether one was released.
   bool Peel(const Eigen::VectorXd& d) {
     bool factored = false;
-    std::size_t chosen = nodes_.size();
+    std::size_t chosen = node_count_;
     double worst = 1.0;  // G / Gamma of the chosen node
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    for (std::size_t k = 0; k < node_count_; ++k) {
       if (!stuck_[k]) continue;
-      const double p = Reaction(k, gap_ + d[nodes_[k].w]);
+      const double p = Reaction(k, Gap(points_[k], d));
       if (p >= 0.0) continue;  // pressed, or not pulled: nothing to peel
       const bool left = k > 0 && Adjacent(k - 1, k) && stuck_[k - 1];
-      const bool right = k + 1 < nodes_.size() && Adjacent(k, k + 1) && stuck_[k + 1];
+      const bool right = k + 1 < node_count_ && Adjacent(k, k + 1) && stuck_[k + 1];
       if (left && right) continue;  // inside a stuck zone: peeling starts at its edges
       double freed = 0.0;           // the adhered length the release frees (internal)
-      if (left) freed += nodes_[k].x - nodes_[k - 1].x;
-      if (right) freed += nodes_[k + 1].x - nodes_[k].x;
+      if (left) freed += points_[k].x - points_[k - 1].x;
+      if (right) freed += points_[k + 1].x - points_[k].x;
       double ratio = std::numeric_limits<double>::infinity();
       if (freed > 0.0) {
         if (!factored && !FactorCompliance(d)) return false;
         factored = true;
         const double energy = 0.5 * p * p * Compliance(k) * units_.force * units_.length;
-        const double area = nodes_[k].width * freed * units_.length * units_.length;
+        const double area = points_[k].width * freed * units_.length * units_.length;
         ratio = energy / (options_.adhesion_energy * area);
       }
       if (ratio > worst) {
@@ -311,7 +465,7 @@ class SubstrateContact final : public NonlinearForce {
         chosen = k;
       }
     }
-    if (chosen == nodes_.size()) return false;
+    if (chosen == node_count_) return false;
     stuck_[chosen] = 0;
     lambda_[chosen] = 0.0;
     return true;
@@ -320,9 +474,15 @@ class SubstrateContact final : public NonlinearForce {
   // Factors K plus the springs of the active constraints; false if it is not definite.
   bool FactorCompliance(const Eigen::VectorXd& d) {
     springs_.mutable_data() = stiffness_.data();
-    for (std::size_t k = 0; k < nodes_.size(); ++k) {
-      if (stuck_[k] || Reaction(k, gap_ + d[nodes_[k].w]) > 0.0) {
-        springs_.Add(nodes_[k].w, nodes_[k].w, penalty_);
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+      if (!Holds(k) || (!stuck_[k] && Reaction(k, Gap(points_[k], d)) <= 0.0)) continue;
+      const Point& point = points_[k];
+      for (int a = 0; a < 4; ++a) {
+        for (int b = a; b < 4; ++b) {
+          if (point.dof[a] >= 0 && point.dof[b] >= 0) {
+            springs_.Add(point.dof[a], point.dof[b], penalty_ * point.shape[a] * point.shape[b]);
+          }
+        }
       }
     }
     return compliance_.Compute(springs_).info() == Status::kOk;
@@ -332,7 +492,7 @@ class SubstrateContact final : public NonlinearForce {
   // Morrison on c = e^T A^-1 e. With the penalty 1e4 times the nodal stiffness the subtraction
   // loses about four of sixteen digits.
   double Compliance(std::size_t k) {
-    const int w = nodes_[k].w;
+    const int w = points_[k].dof[0];
     unit_.setZero();
     unit_[w] = 1.0;
     compliance_.SolveInPlace(unit_);
@@ -345,9 +505,11 @@ class SubstrateContact final : public NonlinearForce {
   UnitSystem units_;
   ContactOptions options_;
   double gap_ = 0.0, tolerance_ = 0.0, proximity_ = 0.0, penalty_ = 0.0, length_ = 0.0;
-  std::vector<Node> nodes_;
+  std::vector<Point> points_;
+  std::size_t node_count_ = 0;  ///< the nodes' points, first in points_
   std::vector<double> lambda_, committed_lambda_;
   std::vector<char> stuck_, committed_stuck_;
+  std::vector<char> placed_, committed_placed_;  ///< whether each point holds (nodes: always)
   std::vector<ContactState> node_state_;
   ContactState state_ = ContactState::kFree;
   ContactEvents events_;
@@ -357,8 +519,8 @@ class SubstrateContact final : public NonlinearForce {
   BandCholesky mass_factor_;
   Eigen::MatrixXd columns_, schur_;
   Eigen::VectorXd multipliers_;
-  std::vector<int> active_;    ///< reduced indices of the nodes the projection holds
-  std::vector<int> held_set_;  ///< the held nodes columns_ and schur_ were made for
+  std::vector<int> active_;    ///< the points the projection holds
+  std::vector<int> held_set_;  ///< the held points columns_ and schur_ were made for
   int held_ = 0;               ///< their count (0: none made)
 };
 
