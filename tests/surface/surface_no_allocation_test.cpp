@@ -29,7 +29,7 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
       SubstrateContact<2>(model, contact),
       GapForce<2, CasimirPressure>(model, CasimirPressure{},
                                    GapSpan{gap, 0.0, length}.WithSeparation(contact.separation)),
-      SqueezeFilm<2>(model, SqueezeFilmOptions{}, gap));
+      SqueezeFilm<2>(model, SqueezeFilmOptions{}, gap, contact.separation));
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0),
                                         1e-4 / model.units().time);

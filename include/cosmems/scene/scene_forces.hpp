@@ -27,7 +27,7 @@ class SceneForces {
       stretching_ = std::make_unique<StretchingForce<Dim>>(model);
       structural_.Add(*stretching_);
     }
-    // The gap pressures see no nearer gap than the one contact stops the faces at.
+    // The gap pressures and the film see no nearer gap than the one contact stops the faces at.
     double separation = 0.0;
     if (e.HasContact()) {
       const ContactOptions contact = MakeContactOptions(scene);
@@ -41,7 +41,7 @@ class SceneForces {
       SqueezeFilmOptions film;
       film.viscosity = e.squeeze_film->viscosity.value_or(film.viscosity);
       film.mean_free_path = e.squeeze_film->mean_free_path.value_or(film.mean_free_path);
-      squeeze_film_ = std::make_unique<SqueezeFilm<Dim>>(model, film, gap);
+      squeeze_film_ = std::make_unique<SqueezeFilm<Dim>>(model, film, gap, separation);
       structural_.Add(*squeeze_film_);
     }
     // A pull-in analysis scales the electrode's pressure itself: it is the analysis's unknown.

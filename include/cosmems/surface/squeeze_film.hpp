@@ -43,9 +43,13 @@ struct SqueezeFilmOptions {
 template <int Dim>
 class SqueezeFilm final : public NonlinearForce {
  public:
-  SqueezeFilm(const BeamModel<Dim>& model, const SqueezeFilmOptions& options, double gap)
+  /// `separation` [m]: where contact stops the faces (ContactOptions::separation); nearer than it
+  /// the film keeps its coefficient there, as the gap pressures do (GapSpan::separation).
+  SqueezeFilm(const BeamModel<Dim>& model, const SqueezeFilmOptions& options, double gap,
+              double separation = 0.0)
       : options_(ValidOptions(options)),
-        integral_(model, GapSpan{gap, 0.0, model.description().Length()}),
+        integral_(model,
+                  GapSpan{gap, 0.0, model.description().Length()}.WithSeparation(separation)),
         speed_m_s_(model.units().length / model.units().time) {}
 
   bool Evaluate(const Eigen::VectorXd& /*d*/, Eigen::VectorXd& /*force*/,
@@ -65,7 +69,8 @@ class SqueezeFilm final : public NonlinearForce {
         if (s.dof[i] >= 0) vy += n[i] * v[s.dof[i]];
       }
       const double b3 = s.width_m * s.width_m * s.width_m;
-      const auto [c, dc] = Coefficient(gap);  // per b^3
+      const auto [c, slope] = Coefficient(gap);  // per b^3
+      const double dc = integral_.Held(gap) ? 0.0 : slope;
       const double load = weight * b3 * c * vy * speed_m_s_;
       // d(load)/d(d_j) / N_j and d(load)/d(v_j) / N_j, the latter times dv/dd.
       const double stiffness = weight * b3 * dc * length_m * vy * speed_m_s_;
