@@ -153,7 +153,7 @@ TEST(HapticBeamTest, LaidDownByTheStylusItStaysStuckUntilReset) {
   HapticFrame frame = beam.MakeFrame();
   EXPECT_TRUE(frame.contact.Stuck());
   EXPECT_EQ(beam.local_model().force_n, 0.0);
-  // The S-shape's span within two 10 um elements (contact acts at the nodes).
+  // The S-shape's span within two 10 um elements (adhesion acts at the nodes).
   EXPECT_NEAR(frame.contact.detached_length_m, 142e-6, 20e-6);
   EXPECT_LT(frame.deflection_m[20], -0.9 * gap);
   EXPECT_GE(frame.events.stuck, 1);

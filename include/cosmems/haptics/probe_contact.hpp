@@ -81,12 +81,12 @@ class ProbeContact final : public NonlinearForce {
       element.half_thickness = 0.5 * elements[e].section.thickness / units_.length;
       element.half_width = 0.5 * elements[e].section.width / units_.length;
       for (int node = 0; node < 2; ++node) {
-        element.axial[node] = Dof(model, e, node, NodalDof::kUx);
-        element.bending_y[2 * node] = Dof(model, e, node, NodalDof::kUy);
-        element.bending_y[2 * node + 1] = Dof(model, e, node, NodalDof::kRz);
-        element.bending_z[2 * node] = Dof(model, e, node, NodalDof::kUz);
-        element.bending_z[2 * node + 1] = Dof(model, e, node, NodalDof::kRy);
-        element.twist[node] = twisting ? Dof(model, e, node, NodalDof::kRx) : -1;
+        element.axial[node] = model.dofs().Reduced(e + node, NodalDof::kUx);
+        element.bending_y[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUy);
+        element.bending_y[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRz);
+        element.bending_z[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUz);
+        element.bending_z[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRy);
+        element.twist[node] = twisting ? model.dofs().Reduced(e + node, NodalDof::kRx) : -1;
       }
       elements_.push_back(element);
     }
@@ -222,11 +222,6 @@ class ProbeContact final : public NonlinearForce {
     Shapes shape{};
     double sign = 1.0, constant = 0.0;
   };
-
-  static int Dof(const BeamModel<Dim>& model, int element, int node, NodalDof dof) {
-    const int index = FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
-    return index < 0 ? -1 : model.ElementDof(element, node * FrameLayout<Dim>::kNodeDofs + index);
-  }
 
   void Place(ProbeFace face, double sign, double constant, const Dofs& dof, const Shapes& shape) {
     faces_[static_cast<std::size_t>(face)] = Face{dof, shape, sign, constant};

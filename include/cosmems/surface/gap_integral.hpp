@@ -96,8 +96,8 @@ class GapIntegral {
       segment.width_m = model.description().elements[e].section.width;
       segment.weight = h / u.ForcePerLength();
       for (int node = 0; node < 2; ++node) {
-        segment.dof[2 * node] = model.ElementDof(e, Index(node, NodalDof::kUy));
-        segment.dof[2 * node + 1] = model.ElementDof(e, Index(node, NodalDof::kRz));
+        segment.dof[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUy);
+        segment.dof[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRz);
       }
       segments_.push_back(segment);
     }
@@ -146,10 +146,6 @@ class GapIntegral {
   bool Held(double gap_m) const { return gap_m <= separation_ * length_m_; }
 
  private:
-  static int Index(int node, NodalDof dof) {
-    return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
-  }
-
   // The local gap, at least the separation (NaN stays NaN).
   double Gap(const std::array<double, 4>& q, double xi) const {
     const std::array<double, 4> n = HermiteShapes(xi);

@@ -115,8 +115,8 @@ class SubstrateContact final : public NonlinearForce {
     for (int e = 0; e < model.ElementCount(); ++e) {
       Point point;
       for (int node = 0; node < 2; ++node) {
-        point.dof[2 * node] = model.ElementDof(e, Index(node, NodalDof::kUy));
-        point.dof[2 * node + 1] = model.ElementDof(e, Index(node, NodalDof::kRz));
+        point.dof[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUy);
+        point.dof[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRz);
       }
       if (point.dof[0] < 0 && point.dof[2] < 0) continue;  // between two supports
       point.h = model.elements()[e].properties().length;
@@ -310,9 +310,10 @@ class SubstrateContact final : public NonlinearForce {
   /// at the nodes and at the deepest point of each element's cubic.
   double Penetration(const Eigen::VectorXd& d) const {
     double deepest = 0.0;
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-      const double g = k < node_count_ ? Gap(points_[k], d) : DeepestGap(points_[k], d);
-      deepest = std::max(deepest, -g);
+    for (std::size_t k = 0; k < node_count_; ++k) deepest = std::max(deepest, -Gap(points_[k], d));
+    // One cubic per element: its first point's.
+    for (std::size_t k = node_count_; k < points_.size(); k += kInnerPoints.size()) {
+      deepest = std::max(deepest, -DeepestGap(points_[k], d));
     }
     return deepest * units_.length;
   }
@@ -379,10 +380,6 @@ class SubstrateContact final : public NonlinearForce {
                               std::to_string(node_count_));
     }
     return static_cast<std::size_t>(k);
-  }
-
-  static int Index(int node, NodalDof dof) {
-    return node * FrameLayout<Dim>::kNodeDofs + FrameLayout<Dim>::kIndex[static_cast<int>(dof)];
   }
 
   static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
