@@ -25,6 +25,12 @@ inline double Eiz() { return Silicon().young_modulus * ReferenceSection().Second
 inline double Eiy() { return Silicon().young_modulus * ReferenceSection().SecondMomentY(); }
 inline double RhoA() { return Silicon().density * ReferenceSection().Area(); }
 
+/// A planar cantilever of the reference section in silicon.
+inline BeamModel<2> PlanarCantilever(double length, int elements, int order = 0) {
+  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, length, Silicon(),
+                                    ReferenceSection(), elements, order));
+}
+
 /// A 1 x 1 system (a single-degree-of-freedom oscillator's mass or stiffness) and its vectors.
 inline SymmetricBandMatrix Scalar(double value) {
   SymmetricBandMatrix m(1, 0);

@@ -66,6 +66,8 @@
 #include "cosmems/time/load_time_function.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/modal_propagator.hpp"
+#include "cosmems/time/mode_step.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/nonlinear_modal_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"

@@ -363,16 +363,15 @@ void CheckTransient(const TomlFieldReader& r, const Scene& scene) {
 }
 
 // What Newton solves in a transient (`subject`: a nonlinear theory or effect) needs an implicit
-// Newmark-family member: not modal propagation, not the explicit central difference.
+// integrator: a Newmark-family member, or modal propagation, which holds the force over each step
+// (NonlinearModalIntegrator); not the explicit central difference.
 void RequireNewtonIntegrator(const TomlFieldReader& r, const Scene& scene,
                              const std::string& subject) {
   if (scene.analysis.type != AnalysisType::kTransient) return;
-  r.Require(scene.analysis.integrator != Integrator::kModal &&
-                scene.analysis.integrator != Integrator::kCentralDifference,
-            "analysis.integrator",
+  r.Require(scene.analysis.integrator != Integrator::kCentralDifference, "analysis.integrator",
             subject +
-                " is solved by Newton: it needs an implicit Newmark-family integrator "
-                "(\"newmark\", \"hht\" or \"generalized-alpha\")");
+                " is solved by Newton: it needs an implicit integrator (\"newmark\", \"hht\", "
+                "\"generalized-alpha\" or \"modal\")");
 }
 
 // Mid-plane stretching needs both ends held axially, and the Newton path of the Newmark family.
@@ -401,6 +400,9 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
             "\"stretching\" for a bridge)");
   RequireNewtonIntegrator(r, scene, "model.theory = \"cosserat\"");
   if (scene.analysis.type != AnalysisType::kTransient) return;
+  r.Require(scene.analysis.integrator != Integrator::kModal, "analysis.integrator",
+            "model.theory = \"cosserat\" has no modes to propagate: it needs a Newmark-family "
+            "integrator (\"newmark\", \"hht\" or \"generalized-alpha\")");
   const std::optional<DampingEffect>& damping = scene.effects.damping;
   r.Require(!IsOn(damping), "effects.damping",
             "not available for model.theory = \"cosserat\" (remove the table or set enabled = "
@@ -410,8 +412,8 @@ void CheckCosserat(const TomlFieldReader& r, const Scene& scene) {
 // The effects that act through the substrate, and what each analysis does with them: a pull-in
 // needs the electrode; contact and stiction act in static, transient and release analyses, the
 // gas film wherever the beam moves; every surface effect needs the gap and its parameters, and
-// the beam theories with a Newton path that carries them (not the Cosserat rod, nor modal or
-// explicit stepping).
+// the beam theories with a Newton path that carries them (not the Cosserat rod, nor explicit
+// stepping; modal stepping carries all but the gas film, a velocity-dependent force).
 void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   const SceneEffects& e = scene.effects;
   const bool contact = e.HasContact();
@@ -465,6 +467,11 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
               "must be less than half the gap");
   }
   RequireNewtonIntegrator(r, scene, first);
+  r.Require(type != AnalysisType::kTransient || scene.analysis.integrator != Integrator::kModal ||
+                !IsOn(e.squeeze_film),
+            "effects.squeeze_film",
+            "not available with analysis.integrator = \"modal\": the modes take their damping as "
+            "ratios (effects.damping); a gas film needs a Newmark-family integrator");
 }
 
 // The haptic analysis touches the full model (the Cosserat rod is refused in CheckCosserat).

@@ -14,6 +14,7 @@
 #include "haptics/haptic_test_beam.hpp"
 #include "hard_cases/hard_case_support.hpp"
 #include "hard_cases/stick_release_cycles.hpp"
+#include "no_force.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -23,10 +24,7 @@ constexpr double kL = test::kReferenceLength;
 constexpr double kGap = test::kReferenceGap;
 
 // No structural force: the pressures alone, ramped with the loads.
-class NoForce final : public NonlinearForce {
- public:
-  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, ForceTangent&) override { return true; }
-};
+using test::NoForce;
 
 // ---------------------------------------------------------------------------------------------
 // The voltage at V_PI (1 -+ 1e-6).

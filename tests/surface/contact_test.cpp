@@ -20,10 +20,7 @@ namespace {
 
 using test::kReferenceGap;
 
-BeamModel<2> Cantilever(double length, int elements, int order = 0) {
-  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
-                                    test::ReferenceSection(), elements, order));
-}
+using test::PlanarCantilever;
 
 double BendingStiffness() {
   const RectangularSection s = test::ReferenceSection();
@@ -66,7 +63,7 @@ std::vector<double> SampledGaps(const BeamModel<2>& model, const Eigen::VectorXd
 // updates, within the stated tolerance (1e-9 of the gap here).
 TEST(ContactTest, PressedCantileverRestsOnItsTipWithinTheTolerance) {
   const double length = test::kReferenceLength;
-  const BeamModel<2> model = Cantilever(length, 20);
+  const BeamModel<2> model = PlanarCantilever(length, 20);
   ContactOptions options;
   options.gap = kReferenceGap;
   options.tolerance = 1e-9 * kReferenceGap;
@@ -92,7 +89,7 @@ TEST(ContactTest, PressedCantileverRestsOnItsTipWithinTheTolerance) {
 // substrate (within the tolerance), none goes through it, and the contact length follows.
 TEST(ContactTest, DistributedLoadLaysTheBeamDownWithoutPenetration) {
   const double length = test::kReferenceLength;
-  const BeamModel<2> model = Cantilever(length, 40);
+  const BeamModel<2> model = PlanarCantilever(length, 40);
   ContactOptions options;
   options.gap = kReferenceGap;
   SubstrateContact<2> contact(model, options);
@@ -143,7 +140,7 @@ TEST(ContactTest, BeamPressedBetweenNodesStopsWhereItIsPressed) {
 // and sets lambda_i = -k g_i where the penetration exceeds the tolerance; the test forms the gaps
 // of the nodes and quarter points from the Hermite cubics itself.
 TEST(ContactTest, TangentMatchesDifferencesOfThePenaltyEnergy) {
-  const BeamModel<2> model = Cantilever(test::kReferenceLength, 6);
+  const BeamModel<2> model = PlanarCantilever(test::kReferenceLength, 6);
   ContactOptions options;
   options.gap = kReferenceGap;
   options.penalty = 100.0;
@@ -236,7 +233,7 @@ TEST(StictionTest, StuckCantileverFreeSpanMatchesTheEnergyReleaseRateBalance) {
   const double exact = StuckSpan(gamma, kReferenceGap);  // 142 um
   double previous = std::numeric_limits<double>::infinity();
   for (int elements : {50, 100, 200}) {
-    const ContactSummary summary = Release(Cantilever(length, elements), gamma);
+    const ContactSummary summary = Release(PlanarCantilever(length, elements), gamma);
     EXPECT_TRUE(summary.Stuck());
     const double h = length / elements;
     const double error = std::abs(summary.detached_length_m - exact);
@@ -250,10 +247,10 @@ TEST(StictionTest, StuckCantileverFreeSpanMatchesTheEnergyReleaseRateBalance) {
 TEST(StictionTest, ShortCantileverSpringsFreeAndLongOneStaysStuck) {
   const double gamma = 0.02;
   const double span = StuckSpan(gamma, kReferenceGap);
-  const ContactSummary short_beam = Release(Cantilever(0.8 * span, 40), gamma);
+  const ContactSummary short_beam = Release(PlanarCantilever(0.8 * span, 40), gamma);
   EXPECT_EQ(short_beam.state, ContactState::kFree);
   EXPECT_NEAR(short_beam.detached_length_m, 0.8 * span, 1e-12);
-  const ContactSummary long_beam = Release(Cantilever(1.5 * span, 60), gamma);
+  const ContactSummary long_beam = Release(PlanarCantilever(1.5 * span, 60), gamma);
   EXPECT_TRUE(long_beam.Stuck());
 }
 
@@ -264,7 +261,7 @@ TEST(StictionTest, ShortCantileverSpringsFreeAndLongOneStaysStuck) {
 // over the run measured 1.143, 1.107, 1.033 and 1.028 times the initial with rho_inf = 1 (average
 // acceleration), 0.9, 0.8 and 0.7, and 0.9997 with 0.6: the CLI warns above 0.6 with contact.
 TEST(ContactTest, ImpactAtOneMeterPerSecondKeepsPenetrationAndGainsNoEnergy) {
-  const BeamModel<2> model = Cantilever(test::kReferenceLength, 20);
+  const BeamModel<2> model = PlanarCantilever(test::kReferenceLength, 20);
   ContactOptions options;
   options.gap = kReferenceGap;
   SubstrateContact<2> contact(model, options);

@@ -10,6 +10,8 @@
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/squeeze_film.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
+#include "cosmems/time/modal_model.hpp"
+#include "cosmems/time/nonlinear_modal_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
 
@@ -48,6 +50,50 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
                                       f[tip] = 3.0 * closing * s;
                                       ++step;
                                       if (status == Status::kOk) status = integrator.Step(f);
+                                    }),
+            0);
+  EXPECT_EQ(status, Status::kOk);
+  const ContactEvents& events = forces.get<0>().events();
+  EXPECT_GE(events.stuck, 1);
+  EXPECT_GE(events.releases, 1);
+}
+
+// The modal path through the same press, stick and peel (contact, stiction and the Casimir
+// force; the gas film is the Newmark family's): Newton's dense factorisations, the multiplier
+// updates, the peel test and the velocity's projection and fit all run within the counted steps.
+TEST(SurfaceNoAllocationTest, ModalPressStickAndPeelStepsAllocateNothing) {
+  const double length = test::kReferenceLength, gap = 2e-6;
+  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
+                                         test::ReferenceSection(), 20, 0));
+  ContactOptions contact;
+  contact.gap = gap;
+  contact.separation = 2e-8;
+  contact.stiction = true;
+  contact.adhesion_energy = 0.02;
+  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
+      SubstrateContact<2>(model, contact),
+      GapForce<2, CasimirPressure>(model, CasimirPressure{},
+                                   GapSpan{gap, 0.0, length}.WithSeparation(contact.separation)));
+  ModalOptions four;
+  four.count = 4;
+  const ModalModel modal = MakeModalModel(model, SolveModal(model, four), DampingModel{});
+  const int n = model.FreeDofCount();
+  const int tip = model.dofs().Reduced(20, NodalDof::kUy);
+  Eigen::VectorXd pattern = Eigen::VectorXd::Zero(n);
+  pattern[tip] = 0.845 * gap / model.units().force;  // the closing force, 3 EI / L^3 times the gap
+  NonlinearModalIntegrator integrator(model, modal, pattern, forces, 1e-4 / model.units().time);
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(1);
+  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s),
+            Status::kOk);
+  int step = 0;
+  Status status = Status::kOk;
+  // 40 steps down to three times the closing force, 40 up to three times it the other way.
+  EXPECT_EQ(test::AllocationsDuring(80,
+                                    [&] {
+                                      s[0] = 3.0 * (step < 40 ? -step / 40.0
+                                                              : -1.0 + 2.0 * (step - 40) / 40.0);
+                                      ++step;
+                                      if (status == Status::kOk) status = integrator.Step(s);
                                     }),
             0);
   EXPECT_EQ(status, Status::kOk);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
+#include "no_force.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -26,10 +27,7 @@ class CubicSpring : public NonlinearForce {
   double k3_;
 };
 
-class NoForce : public NonlinearForce {
- public:
-  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, ForceTangent&) override { return true; }
-};
+using test::NoForce;
 
 using test::Scalar;
 

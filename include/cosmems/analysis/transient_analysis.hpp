@@ -2,8 +2,6 @@
 
 #include <Eigen/Core>
 #include <cmath>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 #include "cosmems/analysis/modal_analysis.hpp"
@@ -21,23 +19,20 @@
 #include "cosmems/time/load_time_function.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/modal_propagator.hpp"
+#include "cosmems/time/nonlinear_modal_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 
 namespace cosmems {
 
 /// A transient run of `model` under `loads` (one spatial pattern times the time function), by
 /// the full-order Newmark family or by exact modal propagation. With a nonlinear `force`
-/// (stretching, say) the Newmark family takes its Newton path and a static start solves the
-/// nonlinear statics; the modal path is linear and refuses one (std::invalid_argument).
+/// (stretching, contact, surface pressures) the Newmark family takes its Newton path, the modal
+/// path holds the force over each step (NonlinearModalIntegrator), and a static start solves the
+/// nonlinear statics.
 template <int Dim>
 TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
                              const TransientOptions& options, NonlinearForce* force = nullptr) {
   options.Validate();
-  if (force && options.path == TimePath::kModal) {
-    throw std::invalid_argument(
-        "analysis.integrator = \"modal\": modal propagation is linear; a nonlinear theory "
-        "needs a Newmark-family integrator");
-  }
   TransientRecorder recorder(options, model.description().Length());
   TransientResult result;
   const UnitSystem& units = model.units();
@@ -71,9 +66,23 @@ TransientResult RunTransient(const BeamModel<Dim>& model, const LoadCase& loads,
       return result;
     }
     const ModalModel modal = MakeModalModel(model, modes, options.damping);
+    Eigen::VectorXd s = Eigen::VectorXd::Constant(1, options.Amplitude(0));
+    if (force) {
+      NonlinearModalIntegrator integrator(model, modal, pattern, *force, dt);
+      result.status = integrator.Initialize(d0, Eigen::VectorXd::Zero(n), s);
+      if (result.status != Status::kOk) return result;
+      recorder.Run(
+          result,
+          [&](long i) {
+            s[0] = options.Amplitude(i);
+            return integrator.Step(s);
+          },
+          [&] { return output.Evaluate(integrator.displacement()); });
+      recorder.Finish(result);
+      return result;
+    }
     const Eigen::MatrixXd residual = modal.ResidualFlexibility(model, pattern);
     ModalPropagator propagator(modal.coordinates, modal.shapes, pattern, residual, dt);
-    Eigen::VectorXd s = Eigen::VectorXd::Constant(1, options.Amplitude(0));
     propagator.Initialize(modal.Project(model, (d0 - residual * s).eval()),
                           Eigen::VectorXd::Zero(modal.shapes.cols()), s);
     const Eigen::RowVectorXd output_shapes = output.Evaluate(modal.shapes);

@@ -1,27 +1,19 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <unsupported/Eigen/MatrixFunctions>
 #include <vector>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
+#include "cosmems/time/mode_step.hpp"
 
 namespace cosmems {
-
-/// One mode of a modal model: q'' + 2 zeta w q' + w^2 q = phi^T f, with phi normalised to unit
-/// modal mass.
-struct ModalCoordinate {
-  double omega = 0.0;  ///< rad per internal time unit
-  double damping_ratio = 0.0;
-};
 
 /// Exact propagation of decoupled modal oscillators under loads that vary linearly over a step.
 ///
 /// Loads are fixed spatial patterns P (n x m columns) times time functions s(t), f = P s. Per
-/// mode, the step map [q, q']_(n+1) = A [q, q']_n + B0 g_n + B1 g_(n+1), g = phi^T P s, is the
-/// exact solution for s linear in t over the step, taken from the exponential of the augmented
-/// 4x4 system [q, q', g, g'] (Van Loan); so the step is limited by how fast the load changes,
+/// mode, the step map (ModeStep) with g = phi^T P s is the exact solution for s linear in t over
+/// the step; so the step is limited by how fast the load changes,
 /// never by stability or by the modal frequencies. The truncated modes answer statically:
 /// d = Phi q + R P s with R = K^-1 - sum_i phi_i phi_i^T / w_i^2 (`residual_flexibility` = R P),
 /// so a point load still produces its local deflection. Step() allocates nothing.
@@ -39,23 +31,10 @@ class ModalPropagator {
         dt_(time_step) {
     RequirePositive("time_step", time_step);
     const int k = static_cast<int>(modes_.size());
-    a_.resize(k);
-    b0_.resize(k);
-    b1_.resize(k);
-    for (int i = 0; i < k; ++i) {
-      RequirePositive("mode omega", modes_[i].omega);
-      const double w = modes_[i].omega;
-      Eigen::Matrix4d f = Eigen::Matrix4d::Zero();
-      f(0, 1) = 1.0;
-      f(1, 0) = -w * w;
-      f(1, 1) = -2.0 * modes_[i].damping_ratio * w;
-      f(1, 2) = 1.0;
-      f(2, 3) = 1.0;
-      const Eigen::Matrix4d e = (f * dt_).exp();
-      a_[i] = e.topLeftCorner<2, 2>();
-      // g(t) = g_n + (g_(n+1) - g_n) t / dt: the block E12 acts on [g_n, (g_(n+1) - g_n) / dt].
-      b0_[i] = e.block<2, 1>(0, 2) - e.block<2, 1>(0, 3) / dt_;
-      b1_[i] = e.block<2, 1>(0, 3) / dt_;
+    steps_.reserve(modes_.size());
+    for (const ModalCoordinate& mode : modes_) {
+      RequirePositive("mode omega", mode.omega);
+      steps_.push_back(ModeStep::Make(mode, dt_));
     }
     q_.setZero(k);
     qdot_.setZero(k);
@@ -83,7 +62,8 @@ class ModalPropagator {
     g_next_.noalias() = modal_loads_ * s_next;
     for (Eigen::Index i = 0; i < q_.size(); ++i) {
       const Eigen::Vector2d x(q_[i], qdot_[i]);
-      const Eigen::Vector2d y = a_[i] * x + b0_[i] * g_[i] + b1_[i] * g_next_[i];
+      const ModeStep& m = steps_[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d y = m.a * x + m.b0 * g_[i] + m.b1 * g_next_[i];
       q_[i] = y[0];
       qdot_[i] = y[1];
     }
@@ -119,8 +99,7 @@ class ModalPropagator {
   Eigen::MatrixXd residual_;
   double dt_;
   double time_ = 0.0;
-  std::vector<Eigen::Matrix2d> a_;
-  std::vector<Eigen::Vector2d> b0_, b1_;
+  std::vector<ModeStep> steps_;
   Eigen::VectorXd q_, qdot_, s_, g_, g_next_;
 };
 

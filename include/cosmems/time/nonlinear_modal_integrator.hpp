@@ -1,0 +1,367 @@
+#pragma once
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "cosmems/beam/beam_model.hpp"
+#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/core/status.hpp"
+#include "cosmems/core/validation.hpp"
+#include "cosmems/time/modal_model.hpp"
+#include "cosmems/time/mode_step.hpp"
+#include "cosmems/time/newton_options.hpp"
+
+namespace cosmems {
+
+/// Modal propagation with a nonlinear force (contact and stiction, the surface pressures,
+/// mid-plane stretching): M a + C v + K d + r(d) = P s, the k modes of a ModalModel propagated
+/// exactly and the truncated ones answering statically, d = Phi q + R (P s - r(d)) with
+/// R = K^-1 - Phi diag(1/w^2) Phi^T (ModalModel::ResidualFlexibility).
+///
+/// The loads P s vary linearly over a step, as in ModalPropagator. The force is held over each
+/// step at its value at the step's end: per mode [q, q']_(n+1) = free motion - (b0 + b1) phi^T r
+/// (ModeStep), so the end displacement solves d + G r(d) = d_free with
+/// G = R + Phi diag((b0 + b1)_q) Phi^T, which Newton solves in the symmetric form
+///   G^-1 (d - d_free) + r(d) = 0,  J = G^-1 + dr/dd.
+/// G^-1 is the step's own stiffness: about 2/h^2 times the modal mass along the modes, K across
+/// the truncated ones; so a contact holds the beam between the modes as the static correction
+/// would, and the state at rest is the full model's static equilibrium K d + r(d) = P s.
+///
+/// Why held, not interpolated like the loads: a reaction interpolated from r_n to r_(n+1) enters
+/// the end displacement as b0 r_n + b1 r_(n+1), with b0 twice b1 for short steps, so the reaction
+/// holding a node on the substrate must be -2 times the last one at every step, and it diverges.
+/// Held, the last step's reaction does not enter the next (the time stepping of Moreau and Jean
+/// for constraints): first order in how the force varies over a step, while the linear part stays
+/// exact. At the end of a step the force removes the motion it forbids
+/// (NonlinearForce::ProjectMotion) from v = Phi q', and q' is fitted back in the M_0 norm; both
+/// projections are orthogonal in the mass metric, so neither adds kinetic energy.
+///
+/// Newton follows the Newmark path's protocol: the force's Settle() after convergence, Revert()
+/// after a failure, a mass term raised where J turns indefinite (a Casimir or electrostatic
+/// snap), an iterate outside the force's domain pulled back, and a failed step cut into halves up
+/// to NewtonOptions::max_cuts deep.
+///
+/// G and J are dense (n x n, n the free unknowns): the set-up forms G^-1 for the step and each
+/// cut of it (max_cuts + 1 inversions, n^3 each) and an iteration factors J (n^3 / 6). That suits
+/// the beams of up to a few hundred unknowns a modal model serves; the Newmark family's band path
+/// is the one that scales to long meshes. Velocity-dependent forces are refused (the modes carry
+/// their damping as ratios). Steps allocate nothing.
+class NonlinearModalIntegrator {
+ public:
+  /// `modal`: the modes of `model`; `patterns`: n x m load patterns.
+  template <int Dim>
+  NonlinearModalIntegrator(const BeamModel<Dim>& model, const ModalModel& modal,
+                           const Eigen::MatrixXd& patterns, NonlinearForce& force, double time_step,
+                           NewtonOptions options = {})
+      : force_(force),
+        shapes_(modal.shapes),
+        modal_loads_(modal.shapes.transpose() * patterns),
+        residual_loads_(modal.ResidualFlexibility(model, patterns)),
+        dt_(time_step),
+        options_(options),
+        tangent_(model.FreeDofCount(), model.Mass(0).bandwidth()) {
+    RequirePositive("time_step", time_step);
+    if (force.HasViscousPart()) {
+      throw std::invalid_argument(
+          "modal propagation carries damping as modal ratios: a velocity-dependent force (a gas "
+          "film) needs a Newmark-family integrator");
+    }
+    const int n = model.FreeDofCount();
+    const Eigen::Index k = shapes_.cols();
+    for (const ModalCoordinate& mode : modal.coordinates) RequirePositive("mode omega", mode.omega);
+    mass_ = model.Mass(0).ToDense();
+    const Eigen::MatrixXd mass_shapes = mass_ * shapes_;
+    fit_ = (shapes_.transpose() * mass_shapes).llt().solve(mass_shapes.transpose());
+    flexibility_ = modal.ResidualFlexibility(model, Eigen::MatrixXd::Identity(n, n));
+    // The step's map and stiffness for the step and each of its cuts.
+    for (int depth = 0; depth <= options_.max_cuts; ++depth) {
+      const double h = std::ldexp(dt_, -depth);
+      Level level;
+      Eigen::VectorXd held(k);
+      for (Eigen::Index i = 0; i < k; ++i) {
+        level.steps.push_back(ModeStep::Make(modal.coordinates[static_cast<std::size_t>(i)], h));
+        held[i] = level.steps.back().b0[0] + level.steps.back().b1[0];
+      }
+      Eigen::MatrixXd g = flexibility_ + shapes_ * held.asDiagonal() * shapes_.transpose();
+      const Eigen::LLT<Eigen::MatrixXd> llt(g);
+      if (llt.info() != Eigen::Success) {
+        setup_status_ = Status::kNotPositiveDefinite;
+        level.stiffness = Eigen::MatrixXd::Zero(n, n);
+      } else {
+        level.stiffness = llt.solve(Eigen::MatrixXd::Identity(n, n));
+      }
+      levels_.push_back(std::move(level));
+    }
+    jacobian_.setZero(n, n);
+    for (Eigen::VectorXd* v : {&d_, &velocity_, &scratch_, &d_new_, &d_free_, &y_free_, &r_,
+                               &residual_, &work_, &correction_, &d_save_, &correction_save_}) {
+      v->setZero(n);
+    }
+    for (Eigen::VectorXd* v :
+         {&q_, &qdot_, &q_free_, &qdot_free_, &g_from_, &g_to_, &rho_, &q_save_, &qdot_save_}) {
+      v->setZero(k);
+    }
+    s_.setZero(patterns.cols());
+    s_from_.setZero(patterns.cols());
+    s_to_.setZero(patterns.cols());
+  }
+
+  /// The state d0, v0 under the load amplitudes s0 at t = 0. The modal coordinates are fitted to
+  /// it in the M_0 norm (ModalModel::Project), of d0 less its static part R (P s0 - r(d0)).
+  Status Initialize(const Eigen::VectorXd& d0, const Eigen::VectorXd& v0,
+                    const Eigen::VectorXd& s0) {
+    RequireSize("d0", d0.size(), d_.size(), "one per free unknown");
+    RequireSize("v0", v0.size(), d_.size(), "one per free unknown");
+    RequireSize("s0", s0.size(), s_.size(), "one per load pattern");
+    d_ = d0;
+    s_ = s0;
+    time_ = 0.0;
+    r_.setZero();
+    tangent_.Clear();
+    if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
+    work_ = d0 - residual_loads_ * s0 + flexibility_ * r_;
+    q_.noalias() = fit_ * work_;
+    qdot_.noalias() = fit_ * v0;
+    velocity_.noalias() = shapes_ * qdot_;
+    // What the force holds the state away from its free motion by: the first predictor.
+    correction_ = d0 - residual_loads_ * s0;
+    correction_.noalias() -= shapes_ * q_;
+    force_.Commit(d_);
+    return setup_status_;
+  }
+
+  /// Advances by dt to the load amplitudes s_next. On failure the state stays at the step's start.
+  [[nodiscard]] Status Step(const Eigen::VectorXd& s_next) {
+    if (setup_status_ != Status::kOk) return setup_status_;
+    s_target_ = &s_next;
+    last_iterations_ = last_cuts_ = 0;
+    time_save_ = time_;
+    const Status status = Advance(0.0, 1.0, 0);
+    if (status == Status::kOk) {
+      s_ = s_next;
+    } else if (last_cuts_ > 0) {  // a cut step may have got part of the way: return to its start
+      q_ = q_save_;
+      qdot_ = qdot_save_;
+      d_ = d_save_;
+      correction_ = correction_save_;
+      velocity_.noalias() = shapes_ * qdot_;
+      time_ = time_save_;
+    }
+    s_target_ = nullptr;
+    return status;
+  }
+
+  const Eigen::VectorXd& displacement() const { return d_; }
+  /// Phi q': the modes' velocity (the static part's rate is not tracked).
+  const Eigen::VectorXd& velocity() const { return velocity_; }
+  const Eigen::VectorXd& modal_displacement() const { return q_; }
+  const Eigen::VectorXd& modal_velocity() const { return qdot_; }
+  double time() const { return time_; }
+  /// Newton iterations of the last step (all sub-steps) and how many times it was cut.
+  int last_iterations() const { return last_iterations_; }
+  int last_cuts() const { return last_cuts_; }
+
+ private:
+  // The modes' maps over a step of dt / 2^depth and that step's stiffness G^-1.
+  struct Level {
+    std::vector<ModeStep> steps;
+    Eigen::MatrixXd stiffness;
+  };
+
+  Status Advance(double from, double to, int depth) {
+    const Status status = Substep(from, to, depth);
+    if (status == Status::kOk) return status;
+    force_.Revert();
+    if (depth >= options_.max_cuts) return status;
+    if (last_cuts_ == 0) {  // a failed sub-step leaves the state alone: this is the step's start
+      q_save_ = q_;
+      qdot_save_ = qdot_;
+      d_save_ = d_;
+      correction_save_ = correction_;
+    }
+    ++last_cuts_;
+    const double mid = 0.5 * (from + to);
+    const Status first = Advance(from, mid, depth + 1);
+    return first == Status::kOk ? Advance(mid, to, depth + 1) : first;
+  }
+
+  // One step over [from, to] of the step (dt / 2^depth long), the loads interpolated linearly.
+  Status Substep(double from, double to, int depth) {
+    const Level& level = levels_[static_cast<std::size_t>(depth)];
+    const Eigen::MatrixXd& stiffness = level.stiffness;
+    s_from_ = (1.0 - from) * s_ + from * *s_target_;
+    s_to_ = (1.0 - to) * s_ + to * *s_target_;
+    g_from_.noalias() = modal_loads_ * s_from_;
+    g_to_.noalias() = modal_loads_ * s_to_;
+    for (Eigen::Index i = 0; i < q_.size(); ++i) {  // the free motion of each mode
+      const ModeStep& m = level.steps[static_cast<std::size_t>(i)];
+      const Eigen::Vector2d y =
+          m.a * Eigen::Vector2d(q_[i], qdot_[i]) + m.b0 * g_from_[i] + m.b1 * g_to_[i];
+      q_free_[i] = y[0];
+      qdot_free_[i] = y[1];
+    }
+    d_free_.noalias() = shapes_ * q_free_;
+    d_free_.noalias() += residual_loads_ * s_to_;
+    y_free_.noalias() = stiffness * d_free_;
+    d_new_ = d_free_ + correction_;  // the force holds the beam where it held it last
+    const double h = (to - from) * dt_;
+    const double cm = 2.0 / (h * h);  // a mode's stiffness over the step per unit modal mass
+    const int n = static_cast<int>(d_.size());
+    double previous_norm = 0.0;
+    int settles = 0;
+    for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+      if (settles > options_.max_settles) break;
+      ++last_iterations_;
+      if (!EvaluateWithin(iteration)) return Status::kNonFinite;
+      // R = G^-1 d - G^-1 d_free + r, and the sizes of its terms.
+      work_.noalias() = stiffness * d_new_;
+      residual_ = work_ - y_free_ + r_;
+      const double norm = residual_.norm();
+      if (!std::isfinite(norm)) return Status::kNonFinite;
+      const double reference = work_.norm() + y_free_.norm() + r_.norm();
+      const bool converged =
+          norm <= options_.residual_tolerance * reference ||
+          (iteration > 1 && NewtonOptions::StalledAtRoundOff(norm, previous_norm,
+                                                             [&] { return RoundOff(stiffness); }));
+      if (converged) {
+        if (Settled(iteration, settles)) return Accept(level, from, to);
+        continue;
+      }
+      previous_norm = norm;
+      bool shifted = false;
+      Status solved = Solve(stiffness, 0.0);
+      for (double shift = cm / 64.0;
+           solved == Status::kNotPositiveDefinite && shift <= kMaxMassShift * cm; shift *= 4.0) {
+        solved = Solve(stiffness, shift);
+        shifted = solved == Status::kOk;
+      }
+      if (solved != Status::kOk) return solved;
+      double increment2 = 0.0, displacement2 = 0.0;
+      for (int i = 0; i < n; ++i) {
+        d_new_[i] -= residual_[i];
+        increment2 += residual_[i] * residual_[i];
+        displacement2 += d_new_[i] * d_new_[i];
+      }
+      // A shifted solve moves less than Newton would: its small increment proves nothing.
+      if (!shifted &&
+          std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
+          Settled(iteration, settles)) {
+        return Accept(level, from, to);
+      }
+    }
+    return Status::kNotConverged;
+  }
+
+  // Newton has converged for the force's present state: true if the force keeps it there;
+  // otherwise (a contact multiplier updated, a node peeled off) Newton starts afresh.
+  bool Settled(int& iteration, int& settles) {
+    if (force_.Settle(d_new_)) return true;
+    ++settles;
+    iteration = 0;
+    return false;
+  }
+
+  // Evaluates the force at d_new_. An iterate outside the force's domain (a gap closed under a
+  // 1/gap^n pressure) is pulled back along the last increment, which residual_ still holds,
+  // halving it up to 10 times; the predictor has no increment to retreat along.
+  bool EvaluateWithin(int iteration) {
+    for (int retreat = 0;; ++retreat) {
+      r_.setZero();
+      tangent_.Clear();
+      if (force_.Evaluate(d_new_, r_, tangent_)) return true;
+      if (iteration == 1 || retreat == 10) return false;
+      residual_ *= 0.5;
+      d_new_ += residual_;
+    }
+  }
+
+  // Solves (G^-1 + dr/dd + shift M_0) delta = R in place in residual_. With a shift the mass
+  // term is that of a shorter step, as in the Newmark path: the iteration creeps the way a
+  // shorter step would, solving this step's equations where J itself is indefinite.
+  Status Solve(const Eigen::MatrixXd& stiffness, double shift) {
+    const SymmetricBandMatrix& band = tangent_.band();
+    const Eigen::MatrixXd& data = band.data();
+    const int n = band.size();
+    const double scale = tangent_.rank_one_scale();
+    const Eigen::VectorXd& u = tangent_.rank_one_vector();
+    for (int j = 0; j < n; ++j) {  // the lower triangle, which the factorisation reads
+      for (int i = j; i < n; ++i) {
+        double value = stiffness(i, j) + shift * mass_(i, j);
+        if (i - j <= band.bandwidth()) value += data(i - j, j);
+        if (scale != 0.0) value += scale * u[i] * u[j];
+        jacobian_(i, j) = value;
+      }
+    }
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(jacobian_);  // in place: allocates nothing
+    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+    llt.solveInPlace(residual_);
+    return Status::kOk;
+  }
+
+  // The largest mass shift, as a multiple of the step's own mass term: that of a step 2^-10 as
+  // long, the depth of cutting it replaces (as in the Newmark path).
+  static constexpr double kMaxMassShift = 1048576.0;
+
+  // The rounding error of G^-1 d, whose entries each sum n products (Higham 3.5); scratch_ holds
+  // |G^-1| |d|.
+  double RoundOff(const Eigen::MatrixXd& stiffness) {
+    const Eigen::Index n = d_new_.size();
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double sum = 0.0;
+      for (Eigen::Index j = 0; j < n; ++j) sum += std::abs(stiffness(i, j) * d_new_[j]);
+      scratch_[i] = sum;
+    }
+    const double mu = static_cast<double>(n) * 0.5 * std::numeric_limits<double>::epsilon();
+    return mu / (1.0 - mu) * scratch_.norm();
+  }
+
+  // Takes d_new_ and the force r_ there as the end of the sub-step [from, to].
+  Status Accept(const Level& level, double from, double to) {
+    rho_.noalias() = shapes_.transpose() * r_;
+    for (Eigen::Index i = 0; i < q_.size(); ++i) {
+      const ModeStep& m = level.steps[static_cast<std::size_t>(i)];
+      q_[i] = q_free_[i] - (m.b0[0] + m.b1[0]) * rho_[i];
+      qdot_[i] = qdot_free_[i] - (m.b0[1] + m.b1[1]) * rho_[i];
+    }
+    correction_ = d_new_ - d_free_;
+    d_.swap(d_new_);  // swaps the buffers: allocates nothing
+    velocity_.noalias() = shapes_ * qdot_;
+    work_ = velocity_;
+    scratch_.setZero();  // the force may project an acceleration too; the modes keep none
+    force_.ProjectMotion(d_, velocity_, scratch_);
+    if (velocity_ != work_) {
+      qdot_.noalias() = fit_ * velocity_;
+      velocity_.noalias() = shapes_ * qdot_;
+    }
+    time_ += (to - from) * dt_;
+    force_.Commit(d_);
+    return Status::kOk;
+  }
+
+  NonlinearForce& force_;
+  Eigen::MatrixXd shapes_;          ///< Phi, n x k
+  Eigen::MatrixXd modal_loads_;     ///< Phi^T P, k x m
+  Eigen::MatrixXd residual_loads_;  ///< R P, n x m
+  Eigen::MatrixXd flexibility_;     ///< R, n x n
+  Eigen::MatrixXd mass_;            ///< M_0, n x n
+  Eigen::MatrixXd fit_;             ///< (Phi^T M_0 Phi)^-1 Phi^T M_0, k x n
+  double dt_;
+  NewtonOptions options_;
+  std::vector<Level> levels_;
+  Status setup_status_ = Status::kOk;
+  ForceTangent tangent_;
+  Eigen::MatrixXd jacobian_;
+  double time_ = 0.0, time_save_ = 0.0;
+  int last_iterations_ = 0, last_cuts_ = 0;
+  const Eigen::VectorXd* s_target_ = nullptr;
+  Eigen::VectorXd s_, s_from_, s_to_;
+  Eigen::VectorXd d_, velocity_, scratch_, d_new_, d_free_, y_free_, r_, residual_, work_,
+      correction_, d_save_, correction_save_;
+  Eigen::VectorXd q_, qdot_, q_free_, qdot_free_, g_from_, g_to_, rho_, q_save_, qdot_save_;
+};
+
+}  // namespace cosmems
