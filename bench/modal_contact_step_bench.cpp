@@ -34,16 +34,21 @@ Eigen::VectorXd TipForce(const BeamModel<2>& model) {
   return AssembleLoads(model, loads);
 }
 
-// Runs `step(amplitude)` over the swinging force; a failed step ends the benchmark.
-template <typename Step>
-void RunTouchdown(benchmark::State& state, Step&& step) {
-  long i = 0;
+// Runs `step(amplitude)` over the swinging force; a failed step ends the benchmark. The mean
+// Newton iterations and factorisations a step go beside the times.
+template <typename Integrator, typename Step>
+void RunTouchdown(benchmark::State& state, const Integrator& integrator, Step&& step) {
+  long i = 0, iterations = 0, factorizations = 0;
   auto next = [&] {
     ++i;
     const Status status = step(std::sin(2.0 * kPi * kFrequency * kStep * static_cast<double>(i)));
     if (status != Status::kOk) state.SkipWithError("a step failed");
+    iterations += integrator.last_iterations();
+    factorizations += integrator.last_factorizations();
   };
   for (auto _ : state) next();
+  state.counters["iterations"] = static_cast<double>(iterations) / static_cast<double>(i);
+  state.counters["factorizations"] = static_cast<double>(factorizations) / static_cast<double>(i);
   bench::RecordStepExtremes(state, next);
 }
 
@@ -61,7 +66,7 @@ void BM_TouchdownModalStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  RunTouchdown(state, [&](double amplitude) {
+  RunTouchdown(state, integrator, [&](double amplitude) {
     s[0] = amplitude;
     return integrator.Step(s);
   });
@@ -81,7 +86,7 @@ void BM_TouchdownNewmarkStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  RunTouchdown(state, [&](double amplitude) {
+  RunTouchdown(state, integrator, [&](double amplitude) {
     f = amplitude * pattern;
     return integrator.Step(f);
   });

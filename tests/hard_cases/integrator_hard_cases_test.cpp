@@ -238,6 +238,8 @@ TEST_P(NonlinearTimeStepTest, StaysWithinItsInitialEnergyOrSaysWhyNot) {
   options.duration = kSteps * time_step;
   options.time_step = time_step;
   options.parameters = Parameters(member);
+  options.path = member == Member::kModal ? TimePath::kModal : TimePath::kNewmarkFamily;
+  options.modes = 4;
   options.start_static = true;
   options.output_x = 0.5 * test::kReferenceLength;
   const TransientResult result = RunTransient(model, loads, options, &stretching);
@@ -255,7 +257,7 @@ TEST_P(NonlinearTimeStepTest, StaysWithinItsInitialEnergyOrSaysWhyNot) {
 std::vector<NonlinearCase> NonlinearCases() {
   std::vector<NonlinearCase> cases;
   for (Member member : {Member::kAverageAcceleration, Member::kHht, Member::kGeneralizedAlpha,
-                        Member::kAnnihilating}) {
+                        Member::kAnnihilating, Member::kModal}) {
     for (double dt : {1e-9, 1e-6, 1e-3}) {
       const bool refused = member == Member::kAnnihilating && dt > 5e-4;
       cases.push_back({member, dt, refused ? Status::kNotConverged : Status::kOk});

@@ -13,6 +13,7 @@
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "modal_reduction.hpp"
 #include "test_beams.hpp"
+#include "thrown_cantilever.hpp"
 
 namespace cosmems {
 namespace {
@@ -35,9 +36,11 @@ double Deflection(const BeamModel<2>& model, const Eigen::VectorXd& d, int node)
 // on its tip as the propped cantilever: tip on the substrate, w(L/2) = -5 g / 16. At rest the
 // modal path's state is the full model's static one (the truncated modes answer statically), and
 // the Hermite elements are exact for nodal loads, so the rest state differs from the closed form
-// by the penetration the contact accepts (1e-4 of the gap) and what the damping left of the
-// motion. 1 us steps, 1/14 of the first period, and 4 modes, at series orders 0 and 1; the
-// penetration stays within the tolerance at every step, the impact included.
+// by the penetration the contact leaves (at most 1e-4 of the gap) and what the damping left of
+// the motion: measured 3e-9 and 5e-9 of the gap at the tip and midspan, at orders 0 and 1 alike;
+// the bound, 1e-6 of the gap, leaves room for rounding on other machines. 1 us steps, 1/14 of the
+// first period, and 4 modes; the penetration stays within the tolerance at every step, the
+// impact included.
 TEST(ModalContactTest, SuddenlyPressedCantileverComesToRestPropped) {
   for (int order : {0, 1}) {
     const BeamModel<2> model = test::PlanarCantilever(kReferenceLength, 20, order);
@@ -63,7 +66,7 @@ TEST(ModalContactTest, SuddenlyPressedCantileverComesToRestPropped) {
     EXPECT_LE(deepest, contact.tolerance()) << "order " << order;
     EXPECT_EQ(contact.Summary().state, ContactState::kContact);
     const Eigen::VectorXd& d = integrator.displacement();
-    const double tolerance = 2e-4 * kReferenceGap;
+    const double tolerance = 1e-6 * kReferenceGap;
     EXPECT_NEAR(Deflection(model, d, 20), -kReferenceGap, tolerance) << "order " << order;
     EXPECT_NEAR(Deflection(model, d, 10), -5.0 / 16.0 * kReferenceGap, tolerance)
         << "order " << order;
@@ -73,42 +76,21 @@ TEST(ModalContactTest, SuddenlyPressedCantileverComesToRestPropped) {
 // The reference cantilever thrown at the substrate at 1 m/s (no adhesion), 8 modes and 10 ns
 // steps: the penetration stays within the tolerance at every step and the energy
 // (1/2 v^T M_0 v + 1/2 d^T K d, v the modes' velocity) never grows above its start, through
-// several impacts.
+// several impacts (measured: 5 contacts, penetration 2e-13 m against the tolerance's 2e-10 m,
+// largest energy the initial one). The velocity's projection at an impact and its fit back onto
+// the modes are both orthogonal in the mass metric, so neither can add energy.
 TEST(ModalContactTest, ImpactAtOneMeterPerSecondKeepsPenetrationAndGainsNoEnergy) {
-  const BeamModel<2> model = test::PlanarCantilever(kReferenceLength, 20, 0);
-  ContactOptions options;
-  options.gap = kReferenceGap;
-  SubstrateContact<2> contact(model, options);
-  const UnitSystem& u = model.units();
-  const ModalModel modal = test::ModalReduction(model, 8, {});
-  const int n = model.FreeDofCount();
-  NonlinearModalIntegrator integrator(model, modal, Eigen::VectorXd::Zero(n), contact,
-                                      10e-9 / u.time);
-  Eigen::VectorXd v0 = Eigen::VectorXd::Zero(n);
-  for (int node = 1; node <= 20; ++node) {
-    v0[model.dofs().Reduced(node, NodalDof::kUy)] = -1.0 / (u.length / u.time);
-  }
-  ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), v0, test::Vec(0.0)), Status::kOk);
-  const SymmetricBandMatrix& m = model.Mass(0);
-  const SymmetricBandMatrix& k = model.Stiffness();
-  auto energy = [&] {
-    const Eigen::VectorXd& d = integrator.displacement();
-    const Eigen::VectorXd& v = integrator.velocity();
-    return 0.5 * (v.dot(m * v) + d.dot(k * d));
-  };
-  const double initial = energy();
-  double deepest = 0.0, largest = 0.0;
-  long touching = 0;
-  for (int step = 0; step < 3000; ++step) {  // 30 us: two periods, several impacts
-    ASSERT_EQ(integrator.Step(test::Vec(0.0)), Status::kOk) << "step " << step;
-    deepest = std::max(deepest, contact.Penetration(integrator.displacement()));
-    largest = std::max(largest, energy());
-    touching += contact.Summary().InContact();
-  }
-  EXPECT_GT(touching, 0);
-  EXPECT_GT(contact.events().contacts, 1);  // it bounced and came back
-  EXPECT_LE(deepest, contact.tolerance());
-  EXPECT_LE(largest, initial * (1.0 + 1e-9));
+  test::ExpectInelasticImpacts(test::ThrowAtTheSubstrate(
+      3000,
+      [](const BeamModel<2>& model, SubstrateContact<2>& contact, const Eigen::VectorXd& v0) {
+        const int n = model.FreeDofCount();
+        NonlinearModalIntegrator integrator(model, test::ModalReduction(model, 8, {}),
+                                            Eigen::VectorXd::Zero(n), contact,
+                                            10e-9 / model.units().time);
+        EXPECT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), v0, test::Vec(0.0)), Status::kOk);
+        return integrator;
+      },
+      [](NonlinearModalIntegrator& integrator) { return integrator.Step(test::Vec(0.0)); }));
 }
 
 // The same press on both paths, through the approach, the first impact, the rebound and the

@@ -18,20 +18,30 @@
 namespace cosmems {
 namespace {
 
-TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
-  const double length = test::kReferenceLength, gap = 2e-6;
-  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
-                                         test::ReferenceSection(), 20, 0));
+constexpr double kGap = 2e-6;
+
+// Contact with stiction on a plane 20 nm above the substrate (asperities).
+ContactOptions StickyContact() {
   ContactOptions contact;
-  contact.gap = gap;
+  contact.gap = kGap;
   contact.separation = 2e-8;
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
+  return contact;
+}
+
+GapForce<2, CasimirPressure> Casimir(const BeamModel<2>& model, const ContactOptions& contact) {
+  return GapForce<2, CasimirPressure>(
+      model, CasimirPressure{},
+      GapSpan{kGap, 0.0, test::kReferenceLength}.WithSeparation(contact.separation));
+}
+
+TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
+  const BeamModel<2> model = test::PlanarCantilever(test::kReferenceLength, 20);
+  const ContactOptions contact = StickyContact();
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>, SqueezeFilm<2>> forces(
-      SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(model, CasimirPressure{},
-                                   GapSpan{gap, 0.0, length}.WithSeparation(contact.separation)),
-      SqueezeFilm<2>(model, SqueezeFilmOptions{}, gap, contact.separation));
+      SubstrateContact<2>(model, contact), Casimir(model, contact),
+      SqueezeFilm<2>(model, SqueezeFilmOptions{}, kGap, contact.separation));
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0),
                                         1e-4 / model.units().time);
@@ -39,7 +49,7 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
   const int tip = model.dofs().Reduced(20, NodalDof::kUy);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
   ASSERT_EQ(integrator.Initialize(f, f, f), Status::kOk);
-  const double closing = 0.845 * gap / model.units().force;  // 3 EI / L^3 times the gap
+  const double closing = 0.845 * kGap / model.units().force;  // 3 EI / L^3 times the gap
   int step = 0;
   Status status = Status::kOk;
   // 40 steps down to three times the closing force, 40 up to three times it the other way.
@@ -62,25 +72,17 @@ TEST(SurfaceNoAllocationTest, PressStickAndPeelStepsAllocateNothing) {
 // force; the gas film is the Newmark family's): Newton's dense factorisations, the multiplier
 // updates, the peel test and the velocity's projection and fit all run within the counted steps.
 TEST(SurfaceNoAllocationTest, ModalPressStickAndPeelStepsAllocateNothing) {
-  const double length = test::kReferenceLength, gap = 2e-6;
-  const BeamModel<2> model(MakeStructure(StructureKind::kCantilever, length, test::Silicon(),
-                                         test::ReferenceSection(), 20, 0));
-  ContactOptions contact;
-  contact.gap = gap;
-  contact.separation = 2e-8;
-  contact.stiction = true;
-  contact.adhesion_energy = 0.02;
+  const BeamModel<2> model = test::PlanarCantilever(test::kReferenceLength, 20);
+  const ContactOptions contact = StickyContact();
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
-      SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(model, CasimirPressure{},
-                                   GapSpan{gap, 0.0, length}.WithSeparation(contact.separation)));
+      SubstrateContact<2>(model, contact), Casimir(model, contact));
   ModalOptions four;
   four.count = 4;
   const ModalModel modal = MakeModalModel(model, SolveModal(model, four), DampingModel{});
   const int n = model.FreeDofCount();
   const int tip = model.dofs().Reduced(20, NodalDof::kUy);
   Eigen::VectorXd pattern = Eigen::VectorXd::Zero(n);
-  pattern[tip] = 0.845 * gap / model.units().force;  // the closing force, 3 EI / L^3 times the gap
+  pattern[tip] = 0.845 * kGap / model.units().force;  // the closing force, 3 EI / L^3 times the gap
   NonlinearModalIntegrator integrator(model, modal, pattern, forces, 1e-4 / model.units().time);
   Eigen::VectorXd s = Eigen::VectorXd::Zero(1);
   ASSERT_EQ(integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), s),

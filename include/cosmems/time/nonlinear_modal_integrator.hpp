@@ -14,6 +14,7 @@
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/mode_step.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_safeguards.hpp"
 
 namespace cosmems {
 
@@ -46,9 +47,10 @@ namespace cosmems {
 /// to NewtonOptions::max_cuts deep.
 ///
 /// G and J are dense (n x n, n the free unknowns): the set-up forms G^-1 for the step and each
-/// cut of it (max_cuts + 1 inversions, n^3 each) and an iteration factors J (n^3 / 6). That suits
-/// the beams of up to a few hundred unknowns a modal model serves; the Newmark family's band path
-/// is the one that scales to long meshes. Velocity-dependent forces are refused (the modes carry
+/// cut of it (max_cuts + 1 inversions, n^3 each), and an iteration that factors J pays n^3 / 6
+/// (the factor is kept while it serves, as on the Newmark path). That suits the beams of up to a
+/// few hundred unknowns a modal model serves; the Newmark family's band path is the one that
+/// scales to long meshes. Velocity-dependent forces are refused (the modes carry
 /// their damping as ratios). Steps allocate nothing.
 class NonlinearModalIntegrator {
  public:
@@ -120,6 +122,7 @@ class NonlinearModalIntegrator {
     d_ = d0;
     s_ = s0;
     time_ = 0.0;
+    factor_depth_ = -1;
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
@@ -138,9 +141,18 @@ class NonlinearModalIntegrator {
   [[nodiscard]] Status Step(const Eigen::VectorXd& s_next) {
     if (setup_status_ != Status::kOk) return setup_status_;
     s_target_ = &s_next;
-    last_iterations_ = last_cuts_ = 0;
+    last_iterations_ = last_cuts_ = last_factorizations_ = 0;
     time_save_ = time_;
-    const Status status = Advance(0.0, 1.0, 0);
+    auto substep = [this](double a, double b, int level) { return Substep(a, b, level); };
+    auto save = [this] {
+      q_save_ = q_;
+      qdot_save_ = qdot_;
+      d_save_ = d_;
+      correction_save_ = correction_;
+    };
+    // A failed part of the step is retried as two halves (the state at the step's start saved).
+    const Status status =
+        AdvanceInHalves(0.0, 1.0, 0, options_.max_cuts, force_, last_cuts_, substep, save);
     if (status == Status::kOk) {
       s_ = s_next;
     } else if (last_cuts_ > 0) {  // a cut step may have got part of the way: return to its start
@@ -161,8 +173,10 @@ class NonlinearModalIntegrator {
   const Eigen::VectorXd& modal_displacement() const { return q_; }
   const Eigen::VectorXd& modal_velocity() const { return qdot_; }
   double time() const { return time_; }
-  /// Newton iterations of the last step (all sub-steps) and how many times it was cut.
+  /// Newton iterations of the last step (all sub-steps), how many of them factored J, and how
+  /// many times the step was cut.
   int last_iterations() const { return last_iterations_; }
+  int last_factorizations() const { return last_factorizations_; }
   int last_cuts() const { return last_cuts_; }
 
  private:
@@ -171,23 +185,6 @@ class NonlinearModalIntegrator {
     std::vector<ModeStep> steps;
     Eigen::MatrixXd stiffness;
   };
-
-  Status Advance(double from, double to, int depth) {
-    const Status status = Substep(from, to, depth);
-    if (status == Status::kOk) return status;
-    force_.Revert();
-    if (depth >= options_.max_cuts) return status;
-    if (last_cuts_ == 0) {  // a failed sub-step leaves the state alone: this is the step's start
-      q_save_ = q_;
-      qdot_save_ = qdot_;
-      d_save_ = d_;
-      correction_save_ = correction_;
-    }
-    ++last_cuts_;
-    const double mid = 0.5 * (from + to);
-    const Status first = Advance(from, mid, depth + 1);
-    return first == Status::kOk ? Advance(mid, to, depth + 1) : first;
-  }
 
   // One step over [from, to] of the step (dt / 2^depth long), the loads interpolated linearly.
   Status Substep(double from, double to, int depth) {
@@ -216,15 +213,20 @@ class NonlinearModalIntegrator {
     for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
       if (settles > options_.max_settles) break;
       ++last_iterations_;
-      if (!EvaluateWithin(iteration)) return Status::kNonFinite;
+      // Pulled back into the force's domain along the last increment, which residual_ holds.
+      if (!EvaluateWithinDomain(force_, iteration == 1, d_new_, residual_, r_, tangent_, [] {})) {
+        return Status::kNonFinite;
+      }
       // R = G^-1 d - G^-1 d_free + r, and the sizes of its terms.
       work_.noalias() = stiffness * d_new_;
       residual_ = work_ - y_free_ + r_;
       const double norm = residual_.norm();
       if (!std::isfinite(norm)) return Status::kNonFinite;
-      const double reference = work_.norm() + y_free_.norm() + r_.norm();
+      const double tolerance =
+          options_.residual_tolerance * (work_.norm() + y_free_.norm() + r_.norm());
+      if (iteration > 1) factor_contraction_ = norm / previous_norm;
       const bool converged =
-          norm <= options_.residual_tolerance * reference ||
+          norm <= tolerance ||
           (iteration > 1 && NewtonOptions::StalledAtRoundOff(norm, previous_norm,
                                                              [&] { return RoundOff(stiffness); }));
       if (converged) {
@@ -232,14 +234,31 @@ class NonlinearModalIntegrator {
         continue;
       }
       previous_norm = norm;
+      // J's factor is kept, as on the Newmark path (NewtonOptions::reuse_contraction), while its
+      // last solve cut the residual that much and, past a step's first iteration, another such
+      // cut would end the step; the residual is exact either way. A contact's tangent changes
+      // only when its state does (Settle), and a factorisation costs more than an iteration.
+      const bool keep = factor_depth_ == depth &&
+                        factor_contraction_ <= options_.reuse_contraction &&
+                        (iteration == 1 || factor_contraction_ * norm <= tolerance);
       bool shifted = false;
-      Status solved = Solve(stiffness, 0.0);
-      for (double shift = cm / 64.0;
-           solved == Status::kNotPositiveDefinite && shift <= kMaxMassShift * cm; shift *= 4.0) {
-        solved = Solve(stiffness, shift);
-        shifted = solved == Status::kOk;
+      if (keep) {
+        const auto lower = jacobian_.triangularView<Eigen::Lower>();
+        lower.solveInPlace(residual_);
+        lower.adjoint().solveInPlace(residual_);
+      } else {
+        factor_depth_ = -1;
+        ++last_factorizations_;
+        Status solved = Solve(stiffness, 0.0);
+        for (double shift = cm / 64.0;
+             solved == Status::kNotPositiveDefinite && shift <= kMaxMassShift * cm; shift *= 4.0) {
+          ++last_factorizations_;
+          solved = Solve(stiffness, shift);
+          shifted = solved == Status::kOk;
+        }
+        if (solved != Status::kOk) return solved;
+        if (!shifted) factor_depth_ = depth;  // a shifted factor is never kept
       }
-      if (solved != Status::kOk) return solved;
       double increment2 = 0.0, displacement2 = 0.0;
       for (int i = 0; i < n; ++i) {
         d_new_[i] -= residual_[i];
@@ -262,21 +281,8 @@ class NonlinearModalIntegrator {
     if (force_.Settle(d_new_)) return true;
     ++settles;
     iteration = 0;
+    factor_depth_ = -1;  // the tangent changed with the state
     return false;
-  }
-
-  // Evaluates the force at d_new_. An iterate outside the force's domain (a gap closed under a
-  // 1/gap^n pressure) is pulled back along the last increment, which residual_ still holds,
-  // halving it up to 10 times; the predictor has no increment to retreat along.
-  bool EvaluateWithin(int iteration) {
-    for (int retreat = 0;; ++retreat) {
-      r_.setZero();
-      tangent_.Clear();
-      if (force_.Evaluate(d_new_, r_, tangent_)) return true;
-      if (iteration == 1 || retreat == 10) return false;
-      residual_ *= 0.5;
-      d_new_ += residual_;
-    }
   }
 
   // Solves (G^-1 + dr/dd + shift M_0) delta = R in place in residual_. With a shift the mass
@@ -356,7 +362,11 @@ class NonlinearModalIntegrator {
   ForceTangent tangent_;
   Eigen::MatrixXd jacobian_;
   double time_ = 0.0, time_save_ = 0.0;
-  int last_iterations_ = 0, last_cuts_ = 0;
+  int last_iterations_ = 0, last_cuts_ = 0, last_factorizations_ = 0;
+  // The depth of the step J's factor in jacobian_ was made for (-1: none), and
+  // ||R_new|| / ||R|| of its last solve.
+  int factor_depth_ = -1;
+  double factor_contraction_ = 1.0;
   const Eigen::VectorXd* s_target_ = nullptr;
   Eigen::VectorXd s_, s_from_, s_to_;
   Eigen::VectorXd d_, velocity_, scratch_, d_new_, d_free_, y_free_, r_, residual_, work_,

@@ -13,6 +13,7 @@
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_safeguards.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
 
 namespace cosmems {
@@ -118,7 +119,16 @@ class NonlinearNewmarkIntegrator {
     f_target_ = &f_next;
     last_iterations_ = last_cuts_ = last_factorizations_ = 0;
     time_save_ = time_;
-    const Status status = Advance(0.0, 1.0, 0);
+    auto substep = [this](double a, double b, int) { return Substep(a, b); };
+    auto save = [this] {
+      d_save_ = d_;
+      v_save_ = v_;
+      a_save_ = a_;
+      r_save_ = r_start_;
+    };
+    // A failed part of the step is retried as two halves (the state at the step's start saved).
+    const Status status =
+        AdvanceInHalves(0.0, 1.0, 0, options_.max_cuts, force_, last_cuts_, substep, save);
     if (status == Status::kOk) {
       f_ = f_next;
     } else if (last_cuts_ > 0) {  // a cut step may have got part of the way: return to its start
@@ -143,24 +153,6 @@ class NonlinearNewmarkIntegrator {
   int last_cuts() const { return last_cuts_; }
 
  private:
-  // Advances the fraction [from, to] of the current step, cutting it in halves on failure.
-  Status Advance(double from, double to, int depth) {
-    const Status status = Substep(from, to);
-    if (status == Status::kOk) return status;
-    force_.Revert();
-    if (depth >= options_.max_cuts) return status;
-    if (last_cuts_ == 0) {  // a failed sub-step leaves the state alone: this is the step's start
-      d_save_ = d_;
-      v_save_ = v_;
-      a_save_ = a_;
-      r_save_ = r_start_;
-    }
-    ++last_cuts_;
-    const double mid = 0.5 * (from + to);
-    const Status first = Advance(from, mid, depth + 1);
-    return first == Status::kOk ? Advance(mid, to, depth + 1) : first;
-  }
-
   // One generalised-alpha step over [from, to] of the step, the load interpolated linearly.
   Status Substep(double from, double to) {
     const double h = (to - from) * dt_;
@@ -200,7 +192,11 @@ class NonlinearNewmarkIntegrator {
       // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
       if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
       const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
-      if (!EvaluateWithin(iteration, ca)) return Status::kNonFinite;
+      // Pulled back into the force's domain along the last increment, which residual_ holds.
+      if (!EvaluateWithinDomain(force_, iteration == 1, d_new_, residual_, r_, tangent_,
+                                [&] { a_new_ = ca * (d_new_ - d_star_); })) {
+        return Status::kNonFinite;
+      }
       if (viscous) {
         v_new_ = v_star_ + (gamma * h) * a_new_;
         if (!force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
@@ -313,22 +309,6 @@ class NonlinearNewmarkIntegrator {
       }
     }
     return Status::kNotConverged;
-  }
-
-  // Evaluates the force at d_new_ into r_ and tangent_. An iterate outside the force's domain
-  // (a gap closed under a 1/gap^n pressure) is pulled back along the last increment, which
-  // residual_ still holds, halving it up to 10 times; the first iterate, the predictor, has no
-  // increment to retreat along.
-  bool EvaluateWithin(int iteration, double ca) {
-    for (int retreat = 0;; ++retreat) {
-      r_.setZero();
-      tangent_.Clear();
-      if (force_.Evaluate(d_new_, r_, tangent_)) return true;
-      if (iteration == 1 || retreat == 10) return false;
-      residual_ *= 0.5;
-      d_new_ += residual_;
-      a_new_ = ca * (d_new_ - d_star_);
-    }
   }
 
   // Solves J delta = R with the mass term of J raised until J is definite, where J itself is
