@@ -9,6 +9,7 @@
 
 #include "cosmems/beam/load_vector.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
+#include "cosmems/time/modal_propagator.hpp"
 #include "cosmems/time/nonlinear_modal_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "modal_reduction.hpp"
@@ -91,6 +92,47 @@ TEST(ModalContactTest, ImpactAtOneMeterPerSecondKeepsPenetrationAndGainsNoEnergy
         return integrator;
       },
       [](NonlinearModalIntegrator& integrator) { return integrator.Step(test::Vec(0.0)); }));
+}
+
+// A step of exactly the first period of an undamped modal model: a force held over it leaves
+// the first mode where it would be without it, and G = R + Phi diag((b0 + b1)_q) Phi^T would be
+// singular. The step runs (the mode takes 1e-6 of its static response instead, kHeldFloor): below
+// the substrate's reach the state is the linear propagator's, which samples the first mode at its
+// own period, to rounding; pressed by 3 times the closing force every step converges within the
+// tolerance. (Sampled once a period, the first mode's swing onto the substrate falls between the
+// steps: contact is held at the steps' ends, so a step must resolve the approach to see it.)
+TEST(ModalContactTest, AStepOfExactlyTheFirstPeriodRuns) {
+  const BeamModel<2> model = test::PlanarCantilever(kReferenceLength, 20, 0);
+  const ModalModel modal = test::ModalReduction(model, 4, {});
+  const double period = 2.0 * kPi / modal.coordinates[0].omega;
+  const double closing = 3.0 * test::Eiz() * kReferenceGap / std::pow(kReferenceLength, 3);
+  const int n = model.FreeDofCount();
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  for (const double load : {0.2, 3.0}) {
+    ContactOptions options;
+    options.gap = kReferenceGap;
+    SubstrateContact<2> contact(model, options);
+    const Eigen::VectorXd pattern = TipPattern(model, -load * closing);
+    NonlinearModalIntegrator integrator(model, modal, pattern, contact, period);
+    ModalPropagator linear(modal.coordinates, modal.shapes, pattern,
+                           modal.ResidualFlexibility(model, pattern), period);
+    linear.Initialize(Eigen::VectorXd::Zero(4), Eigen::VectorXd::Zero(4), test::Vec(1.0));
+    Eigen::VectorXd expected(n);
+    linear.Displacement(expected);
+    ASSERT_EQ(integrator.Initialize(expected, zero, test::Vec(1.0)), Status::kOk);
+    for (int step = 1; step <= 20; ++step) {
+      ASSERT_EQ(integrator.Step(test::Vec(1.0)), Status::kOk)
+          << "load " << load << ", step " << step;
+      ASSERT_TRUE(integrator.displacement().allFinite());
+      EXPECT_LE(contact.Penetration(integrator.displacement()), contact.tolerance());
+      ASSERT_EQ(linear.Step(test::Vec(1.0)), Status::kOk);
+      if (load < 1.0) {
+        linear.Displacement(expected);
+        EXPECT_LE((integrator.displacement() - expected).norm(), 1e-12 * expected.norm())
+            << "step " << step;
+      }
+    }
+  }
 }
 
 // The same press on both paths, through the approach, the first impact, the rebound and the

@@ -41,13 +41,19 @@ struct ModalModel {
   /// modes).
   template <int Dim>
   Eigen::VectorXd Project(const BeamModel<Dim>& model, const Eigen::VectorXd& d) const {
+    return Fit(model) * d;
+  }
+
+  /// The k x n matrix (Phi^T M_0 Phi)^-1 Phi^T M_0 of Project, for a caller that projects often.
+  template <int Dim>
+  Eigen::MatrixXd Fit(const BeamModel<Dim>& model) const {
     Eigen::MatrixXd mass_shapes(shapes.rows(), shapes.cols());
     for (Eigen::Index c = 0; c < shapes.cols(); ++c) {
       auto column = mass_shapes.col(c);
       model.Mass(0).Multiply(shapes.col(c), column);
     }
     const Eigen::MatrixXd gram = shapes.transpose() * mass_shapes;
-    return gram.llt().solve(mass_shapes.transpose() * d);
+    return gram.llt().solve(mass_shapes.transpose());
   }
 };
 

@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -76,19 +77,20 @@ class NonlinearModalIntegrator {
     const Eigen::Index k = shapes_.cols();
     for (const ModalCoordinate& mode : modal.coordinates) RequirePositive("mode omega", mode.omega);
     mass_ = model.Mass(0).ToDense();
-    const Eigen::MatrixXd mass_shapes = mass_ * shapes_;
-    fit_ = (shapes_.transpose() * mass_shapes).llt().solve(mass_shapes.transpose());
+    fit_ = modal.Fit(model);
     flexibility_ = modal.ResidualFlexibility(model, Eigen::MatrixXd::Identity(n, n));
     // The step's map and stiffness for the step and each of its cuts.
     for (int depth = 0; depth <= options_.max_cuts; ++depth) {
       const double h = std::ldexp(dt_, -depth);
       Level level;
-      Eigen::VectorXd held(k);
+      level.held.resize(k);
       for (Eigen::Index i = 0; i < k; ++i) {
-        level.steps.push_back(ModeStep::Make(modal.coordinates[static_cast<std::size_t>(i)], h));
-        held[i] = level.steps.back().b0[0] + level.steps.back().b1[0];
+        const ModalCoordinate& mode = modal.coordinates[static_cast<std::size_t>(i)];
+        level.steps.push_back(ModeStep::Make(mode, h));
+        const ModeStep& m = level.steps.back();
+        level.held[i] = std::max(m.b0[0] + m.b1[0], kHeldFloor / (mode.omega * mode.omega));
       }
-      Eigen::MatrixXd g = flexibility_ + shapes_ * held.asDiagonal() * shapes_.transpose();
+      Eigen::MatrixXd g = flexibility_ + shapes_ * level.held.asDiagonal() * shapes_.transpose();
       const Eigen::LLT<Eigen::MatrixXd> llt(g);
       if (llt.info() != Eigen::Success) {
         setup_status_ = Status::kNotPositiveDefinite;
@@ -113,7 +115,7 @@ class NonlinearModalIntegrator {
   }
 
   /// The state d0, v0 under the load amplitudes s0 at t = 0. The modal coordinates are fitted to
-  /// it in the M_0 norm (ModalModel::Project), of d0 less its static part R (P s0 - r(d0)).
+  /// it in the M_0 norm (ModalModel::Fit), of d0 less its static part R (P s0 - r(d0)).
   Status Initialize(const Eigen::VectorXd& d0, const Eigen::VectorXd& v0,
                     const Eigen::VectorXd& s0) {
     RequireSize("d0", d0.size(), d_.size(), "one per free unknown");
@@ -183,8 +185,15 @@ class NonlinearModalIntegrator {
   // The modes' maps over a step of dt / 2^depth and that step's stiffness G^-1.
   struct Level {
     std::vector<ModeStep> steps;
+    Eigen::VectorXd held;  ///< how far a unit force held over the step moves each mode
     Eigen::MatrixXd stiffness;
   };
+
+  // A force held over a whole number of an undamped mode's periods leaves that mode where it
+  // would be without it, (b0 + b1)_q = (1 - cos w h) / w^2 = 0, and G turns singular: within a
+  // hair of such a step the mode is moved by kHeldFloor of its static response instead, an error
+  // of that size in that mode alone (tested with the step equal to the first period).
+  static constexpr double kHeldFloor = 1e-6;
 
   // One step over [from, to] of the step (dt / 2^depth long), the loads interpolated linearly.
   Status Substep(double from, double to, int depth) {
@@ -330,7 +339,7 @@ class NonlinearModalIntegrator {
     rho_.noalias() = shapes_.transpose() * r_;
     for (Eigen::Index i = 0; i < q_.size(); ++i) {
       const ModeStep& m = level.steps[static_cast<std::size_t>(i)];
-      q_[i] = q_free_[i] - (m.b0[0] + m.b1[0]) * rho_[i];
+      q_[i] = q_free_[i] - level.held[i] * rho_[i];
       qdot_[i] = qdot_free_[i] - (m.b0[1] + m.b1[1]) * rho_[i];
     }
     correction_ = d_new_ - d_free_;
