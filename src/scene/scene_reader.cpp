@@ -374,7 +374,7 @@ void RequireNewtonIntegrator(const TomlFieldReader& r, const Scene& scene,
                 "\"generalized-alpha\" or \"modal\")");
 }
 
-// Mid-plane stretching needs both ends held axially, and the Newton path of the Newmark family.
+// Mid-plane stretching needs both ends held axially, and an integrator with a Newton path.
 void CheckStretching(const TomlFieldReader& r, const Scene& scene) {
   if (scene.model.theory != Theory::kStretching) return;
   r.Require(scene.structure.kind == StructureKind::kBridge, "model.theory",

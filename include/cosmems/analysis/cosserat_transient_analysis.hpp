@@ -22,7 +22,7 @@ inline TransientResult RunCosseratTransient(const CosseratRod& rod, const RodLoa
   options.Validate();
   if (options.path == TimePath::kModal) {
     throw std::invalid_argument(
-        "analysis.integrator = \"modal\": modal propagation is linear; a Cosserat rod needs a "
+        "analysis.integrator = \"modal\": a Cosserat rod has no modes to propagate; it needs a "
         "Newmark-family integrator");
   }
   if (options.damping.kind != DampingModel::Kind::kNone) {
