@@ -3,8 +3,8 @@
 #   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever-haptic)
 #   bash cmake/bootstrap.sh test            build, then run the whole test suite with CTest
 #   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks on, then run one
-#   bash cmake/bootstrap.sh sanitize        the unit tests under AddressSanitizer + UBSan (build/asan)
-#   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and --set with libFuzzer (clang)
+#   bash cmake/bootstrap.sh sanitize        the test suite under AddressSanitizer + UBSan, asserts on
+#   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and the trajectory reader (clang)
 #   bash cmake/bootstrap.sh report [OUTDIR [ARGS...]]  the accuracy-versus-time report: CSV,
 #                                     Markdown and plots in OUTDIR (default build/release/accuracy_report)
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
@@ -12,7 +12,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev
+packages=(g++ ccache cmake make libeigen3-dev libsuitesparse-dev libgtest-dev libgmock-dev
   libbenchmark-dev libtomlplusplus-dev nlohmann-json3-dev libcli11-dev)
 # The viewer (GLFW, OpenGL, Dear ImGui with its back ends, stb for PNG) and its headless test
 # (a virtual X server and Mesa's software renderer).
@@ -64,42 +64,49 @@ case "${1:-}" in
     name=$1; shift
     exec "$build_dir/bench/$name" "$@" ;;
   sanitize)
-    # The code that reads outside input, indexes raw memory or crosses into C: the scene reader
-    # (with the fuzzer's kept inputs), the band factorisations and their kernels, the trajectory
-    # files and scripted device, and the OpenHaptics backend with the fake HD library. The
-    # element, model and haptic-physics tests would take this build from about 4 to 15
-    # CPU-minutes, which CI cannot afford beside the main build; COSMEMS_ASAN_TARGETS=all
-    # runs them all.
-    # The malloc-counting tests are never built here (the sanitizer owns malloc).
+    # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer, float-to-integer
+    # overflow included (GCC leaves it out of "undefined"), with assertions on: -O1 and no NDEBUG,
+    # so the library's and Eigen's asserts run; line tables only (-g1), which is all a report's
+    # stack needs and compiles in 60 % of -g's time. Left out, each for its reason: the
+    # malloc-counting tests (the sanitizer owns malloc), the ThreadSanitizer tests (one
+    # sanitizer a build; they run in `test`) and the viewer's headless run (Mesa's software
+    # renderer, not ours, under LeakSanitizer).
     asan_dir=${COSMEMS_ASAN_DIR:-build/asan}
-    cmake -S . -B "$asan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOSMEMS_SANITIZE=address,undefined \
+    cmake -S . -B "$asan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+      -DCOSMEMS_SANITIZE=address,undefined,float-cast-overflow \
       -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
-    default_targets="cosmems_scene_tests cosmems_linalg_tests cosmems_scripted_tests"
-    default_targets+=" cosmems_openhaptics_tests"
-    read -r -a targets <<< "${COSMEMS_ASAN_TARGETS:-$default_targets}"
-    cmake --build "$asan_dir" -j"$jobs" --target "${targets[@]}"
+    cmake --build "$asan_dir" -j"$jobs" --target cosmems_unit_tests
     exec ctest --test-dir "$asan_dir" --output-on-failure -j"$jobs" -L unit ;;
   fuzz)
+    # Each fuzzer for SECONDS: the scene reader and --set up to the built model, and the CSV
+    # trajectory reader up to the forces a scripted device sends.
     seconds=${2:-60}
     fuzz_dir=${COSMEMS_FUZZ_DIR:-build/fuzz}
     cmake -S . -B "$fuzz_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCOSMEMS_SANITIZE=address,undefined,fuzzer-no-link -DCOSMEMS_BUILD_FUZZERS=ON \
       -DCOSMEMS_BUILD_TESTS=OFF -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
-    cmake --build "$fuzz_dir" -j"$jobs" --target scene_fuzzer
-    # New inputs go to the first (scratch) corpus; the shipped scenes and kept inputs seed it. A
-    # failing input is written to $fuzz_dir/crash-* and belongs in tests/fuzz/regressions.
-    mkdir -p "$fuzz_dir/corpus"
-    seeds=(src/scene/scenes tests/fuzz/seeds)
-    if [ -d tests/fuzz/regressions ]; then seeds+=(tests/fuzz/regressions); fi
-    # libFuzzer reports every new input it finds: that goes to a log, and only a failure's
-    # report and the final figures are printed.
-    if ! "$fuzz_dir/tests/fuzz/scene_fuzzer" -max_total_time="$seconds" -timeout=10 \
-      -rss_limit_mb=2048 -print_final_stats=1 -dict=tests/fuzz/scene.dict \
-      -artifact_prefix="$fuzz_dir/" "$fuzz_dir/corpus" "${seeds[@]}" > "$fuzz_dir/fuzz.log" 2>&1; then
-      tail -n 80 "$fuzz_dir/fuzz.log" >&2
-      exit 1
-    fi
-    grep -E '^(Done|stat::)' "$fuzz_dir/fuzz.log" ;;
+    cmake --build "$fuzz_dir" -j"$jobs" --target scene_fuzzer trajectory_fuzzer
+    # New inputs go to the first (scratch) corpus; the kept inputs seed it. A failing input is
+    # written to $fuzz_dir/<fuzzer>-crash-* and belongs in the fuzzer's regressions folder, which
+    # the ordinary suite replays.
+    for fuzzer in scene trajectory; do
+      case $fuzzer in
+        scene) kept=(src/scene/scenes tests/fuzz/seeds tests/fuzz/regressions); dict=(-dict=tests/fuzz/scene.dict) ;;
+        trajectory) kept=(tests/fuzz/trajectory_seeds tests/fuzz/trajectory_regressions); dict=() ;;
+      esac
+      mkdir -p "$fuzz_dir/corpus-$fuzzer"
+      # libFuzzer reports every new input it finds: that goes to a log, and only a failure's
+      # report and the final figures are printed.
+      if ! "$fuzz_dir/tests/fuzz/${fuzzer}_fuzzer" -max_total_time="$seconds" -timeout=10 \
+        -rss_limit_mb=2048 -print_final_stats=1 "${dict[@]}" \
+        -artifact_prefix="$fuzz_dir/$fuzzer-" "$fuzz_dir/corpus-$fuzzer" "${kept[@]}" \
+        > "$fuzz_dir/$fuzzer.log" 2>&1; then
+        tail -n 80 "$fuzz_dir/$fuzzer.log" >&2
+        exit 1
+      fi
+      echo "$fuzzer fuzzer:"
+      grep -E '^(Done|stat::)' "$fuzz_dir/$fuzzer.log"
+    done ;;
   report)
     shift
     out=${1:-$build_dir/accuracy_report}

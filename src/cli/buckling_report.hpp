@@ -8,7 +8,7 @@
 
 namespace cosmems::internal {
 
-/// What a buckling analysis reports, in SI (SCENES.md, buckling).
+/// What a buckling analysis reports, in SI (doc/cli.md, buckling).
 struct BucklingResults {
   double critical_load_n = 0.0;  ///< compressive axial force of the first buckling mode
   /// N/m^2: critical_load_n over the section's area, the residual stress that buckles the beam

@@ -7,7 +7,7 @@
 
 namespace cosmems::internal {
 
-/// The beam against the substrate as every analysis with contact reports it: SCENES.md's
+/// The beam against the substrate as every analysis with contact reports it: doc/cli.md's
 /// {in_contact, stuck, contact_length_m}, and the extensions state and detached_length_m.
 nlohmann::ordered_json ContactJson(const ContactSummary& contact);
 

@@ -51,6 +51,7 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
 
   HapticResults r;
   r.device_model = device.specs().model;
+  r.bounded_specs = device.specs().bounded_fields;
   r.calibration = device.Calibration();
   session.Start();
   RunSession(scene, opened);
@@ -92,6 +93,11 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
                               " physics ticks failed; the safety layer held the force at zero "
                               "until the next good one");
   }
+  for (const std::string& field : r.bounded_specs) {
+    header.warnings.push_back("the device reported " + field +
+                              " beyond the built-in table's value for its model; the table's "
+                              "value is used");
+  }
   if (r.calibration != CalibrationStatus::kOk) {
     header.warnings.push_back(std::string("device calibration: ") + ToString(r.calibration));
   }
@@ -128,9 +134,12 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
                     {"ramp_ticks", r.safety.ramp_ticks},
                     {"stale_forces", r.safety.stale_forces},
                     {"non_finite_states", r.safety.non_finite_states},
+                    {"out_of_range_states", r.safety.out_of_range_states},
                     {"non_finite_forces", r.safety.non_finite_forces},
                     {"device_faults", r.safety.device_faults},
-                    {"passivity_activations", r.safety.passivity_activations}};
+                    {"passivity_activations", r.safety.passivity_activations},
+                    {"output_guards", r.safety.output_guards},
+                    {"ramp_down_ticks", r.safety.ramp_down_ticks}};
   json["scaling"] = {{"position_scale", r.position_scale},
                      {"force_scale", r.force_scale},
                      {"coupling_stiffness_n_per_m", r.coupling_n_per_m},
@@ -140,7 +149,8 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
   json["contact_events"] = ContactEventsJson(r.events);
   json["device"] = {{"backend", r.hd_library.empty() ? "scripted" : "openhaptics"},
                     {"model", r.device_model},
-                    {"calibration", ToString(r.calibration)}};
+                    {"calibration", ToString(r.calibration)},
+                    {"bounded_specs", r.bounded_specs}};
   if (!r.hd_library.empty()) json["device"]["hd_library"] = r.hd_library;
 }
 

@@ -16,7 +16,7 @@ namespace cosmems::internal {
 /// A loop's tick times as JSON: {median, p99, max} in us.
 nlohmann::ordered_json TimesJson(const LoopStats& stats);
 
-/// What a haptic analysis reports, in SI (SCENES.md, haptic).
+/// What a haptic analysis reports, in SI (doc/cli.md, haptic).
 struct HapticResults {
   LoopStats servo;    ///< the servo loop's figures
   LoopStats physics;  ///< the physics ticks' (its own thread when realtime, else in the servo)
@@ -29,6 +29,7 @@ struct HapticResults {
   double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
   std::string realtime_note;
   std::string device_model;                                ///< from the device's specs
+  std::vector<std::string> bounded_specs;  ///< specs the device reported beyond the table
   CalibrationStatus calibration = CalibrationStatus::kOk;  ///< when the loop started
   std::string hd_library;  ///< OpenHaptics: "sdk" or "fake"; empty for the scripted stylus
   std::vector<ScriptedSample> forces;  ///< scripted: every tick, stylus and the force sent to it

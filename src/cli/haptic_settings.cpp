@@ -74,6 +74,7 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
   shape.start_m = start_device;
   const double duration = scene.analysis.duration;
   if (duration > 0.0) {
+    // The scene reader bounds the duration to an hour: at most 1800 cycles, far inside int.
     shape.cycles = std::max(1, static_cast<int>(std::lround(duration / shape.period_s)));
     shape.period_s = duration / shape.cycles;
   }

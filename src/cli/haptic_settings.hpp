@@ -11,7 +11,7 @@
 namespace cosmems::internal {
 
 /// How a haptic scene's hand meets its beam: the scaling, the probe and the stylus's script,
-/// from [device] with the defaults SCENES.md documents.
+/// from [device] with the defaults doc/scenes.md documents.
 struct HapticSettings {
   HandScaling scaling;
   ProbeOptions probe;

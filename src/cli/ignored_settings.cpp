@@ -3,16 +3,27 @@
 #include "cosmems/scene/scene_conversion.hpp"
 
 namespace cosmems::internal {
+namespace {
 
-std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
-  std::vector<std::string> warnings;
-  const AnalysisType type = scene.analysis.type;
-  if (type != AnalysisType::kStatic && type != AnalysisType::kModal &&
-      type != AnalysisType::kBuckling && type != AnalysisType::kPullin &&
-      type != AnalysisType::kRelease) {
-    return warnings;
+// The haptic analysis touches the beam with the probe alone (HapticSession builds the HapticBeam
+// without loads or damping); the modes it would reduce to are refused by the scene reader.
+void AddHapticWarnings(const Scene& scene, const std::string& unchanged,
+                       std::vector<std::string>& warnings) {
+  if (!MakeLoadCase(scene).Empty()) {
+    warnings.push_back("loads" + unchanged + "the hand's probe is the only load on the beam");
   }
-  const std::string unchanged = std::string(" does not change a ") + ToString(type) + " analysis: ";
+  if (IsOn(scene.effects.damping)) {
+    warnings.push_back("effects.damping" + unchanged +
+                       "the touched beam is damped by the squeeze film only (the tick's "
+                       "integrator removes the vibrations it does not resolve)");
+  }
+}
+
+// Static, modal, buckling, pull-in and release analyses: no time, so no damping, time function
+// or modal stepping, and the loads are not what a pull-in or buckling analysis solves for.
+void AddTimelessWarnings(const Scene& scene, const std::string& unchanged,
+                         std::vector<std::string>& warnings) {
+  const AnalysisType type = scene.analysis.type;
   const std::optional<DampingEffect>& damping = scene.effects.damping;
   if (IsOn(damping)) {
     warnings.push_back("effects.damping" + unchanged +
@@ -28,11 +39,6 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
     warnings.push_back("model.modes = " + std::to_string(scene.model.modes) + unchanged +
                        "modal reduction applies to transient analyses only (analysis.integrator "
                        "= \"modal\")");
-  }
-  if (scene.loads.time_function) {
-    warnings.push_back("loads.time_function = \"" +
-                       std::string(ToString(scene.loads.time_function->kind)) + "\"" + unchanged +
-                       "it sets how the loads vary in transient analyses only");
   }
   if (type == AnalysisType::kPullin && !MakeLoadCase(scene).Empty()) {
     warnings.push_back("loads" + unchanged +
@@ -52,6 +58,27 @@ std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
   if (type == AnalysisType::kBuckling && !MakeLoadCase(scene).Empty()) {
     warnings.push_back("loads" + unchanged +
                        "the critical load is the beam's own; structure.axial_load is part of it");
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> IgnoredSettingWarnings(const Scene& scene) {
+  std::vector<std::string> warnings;
+  const AnalysisType type = scene.analysis.type;
+  const std::string unchanged = std::string(" does not change a ") + ToString(type) + " analysis: ";
+  if (type == AnalysisType::kHaptic) {
+    AddHapticWarnings(scene, unchanged, warnings);
+  } else if (type != AnalysisType::kTransient) {
+    AddTimelessWarnings(scene, unchanged, warnings);
+  }
+  if (type != AnalysisType::kTransient && scene.loads.time_function) {
+    warnings.push_back("loads.time_function = \"" +
+                       std::string(ToString(scene.loads.time_function->kind)) + "\"" + unchanged +
+                       "it sets how the loads vary in transient analyses only");
+  }
+  if (type != AnalysisType::kHaptic && scene.device) {
+    warnings.push_back("device" + unchanged + "[device] is the stylus of a haptic analysis only");
   }
   return warnings;
 }

@@ -19,7 +19,7 @@ struct ModeResult {
   Eigen::MatrixXd shape;
 };
 
-/// Natural frequencies and modes: the JSON fields of SCENES.md, modes.csv and mode_shapes.csv.
+/// Natural frequencies and modes: the JSON fields of doc/cli.md, modes.csv and mode_shapes.csv.
 class ModalReport final : public AnalysisReport {
  public:
   ModalReport(RunHeader header, std::vector<ModeResult> modes)

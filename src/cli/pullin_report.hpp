@@ -8,7 +8,7 @@
 
 namespace cosmems::internal {
 
-/// What a pull-in analysis reports, in SI (SCENES.md, pullin).
+/// What a pull-in analysis reports, in SI (doc/cli.md, pullin).
 struct PullInResults {
   double voltage_v = 0.0;       ///< the pull-in voltage
   double displacement_m = 0.0;  ///< largest deflection of the last stable state

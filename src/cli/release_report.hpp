@@ -9,7 +9,7 @@
 
 namespace cosmems::internal {
 
-/// What a release analysis reports, in SI (SCENES.md, release).
+/// What a release analysis reports, in SI (doc/cli.md, release).
 struct ReleaseResults {
   ContactSummary contact;  ///< after the release
   Eigen::MatrixXd shape;   ///< the equilibrium: one row per node, x (m), ux ... rz

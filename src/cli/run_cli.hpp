@@ -6,7 +6,7 @@
 
 namespace cosmems {
 
-/// The `cosmems` command line of SCENES.md, in process: `args` without the program name,
+/// The `cosmems` command line of doc/cli.md, in process: `args` without the program name,
 /// results on `out`, diagnostics on `err`. Returns the exit status: 0 success; 2 invalid input
 /// (scene errors, bad usage, an unknown scene, an unreadable file or unwritable --out), with
 /// exactly one line on `err`; 3 numerical failure, with the result still printed and its

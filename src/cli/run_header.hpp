@@ -11,7 +11,7 @@
 
 namespace cosmems::internal {
 
-/// What every result reports whatever the analysis (SCENES.md, "JSON results"), plus the
+/// What every result reports whatever the analysis (doc/cli.md, "JSON results"), plus the
 /// warnings the run raised.
 struct RunHeader {
   std::string scene;  ///< the scene name or path as given

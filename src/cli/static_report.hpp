@@ -10,7 +10,7 @@
 
 namespace cosmems::internal {
 
-/// What a static solve reports, in SI (SCENES.md, static).
+/// What a static solve reports, in SI (doc/cli.md, static).
 struct StaticResults {
   std::optional<Eigen::Vector3d> tip_displacement;                 ///< m, cantilever only
   std::optional<Eigen::Vector3d> tip_rotation;                     ///< rad, cantilever only
@@ -24,7 +24,7 @@ struct StaticResults {
   Eigen::MatrixXd nodes;                  ///< one row per node: x, ux, uy, uz (m), rx, ry, rz (rad)
 };
 
-/// Linear statics: the JSON fields of SCENES.md and deflection.csv.
+/// Linear statics: the JSON fields of doc/cli.md and deflection.csv.
 class StaticReport final : public AnalysisReport {
  public:
   StaticReport(RunHeader header, StaticResults results)

@@ -11,7 +11,7 @@
 
 namespace cosmems::internal {
 
-/// What a transient run reports, in SI (SCENES.md, transient). uy is recorded at the free end
+/// What a transient run reports, in SI (doc/cli.md, transient). uy is recorded at the free end
 /// of a cantilever or, as an extension for bridges, at mid-span.
 struct TransientResults {
   StructureKind kind = StructureKind::kCantilever;  ///< names the output point: tip or midspan
@@ -33,7 +33,7 @@ struct TransientResults {
   ContactEvents contact_events;
 };
 
-/// A linear transient run: the JSON fields of SCENES.md and history.csv.
+/// A linear transient run: the JSON fields of doc/cli.md and history.csv.
 ///
 /// JSON: `steps`, `step_time_us` {`median`, `p99`, `max`}, `realtime_factor` (simulated time
 /// over `wall_time_s`, which includes building the model), and `tip_displacement_max` (the

@@ -43,15 +43,30 @@ void CompleteSpecs(DeviceSpecs& reported) {
   auto fill = [](double& value, double fallback) {
     if (!(value > 0.0)) value = fallback;
   };
+  // What the motors may be asked for is never taken from the device alone: a driver that
+  // reports an infinite, NaN, negative or absurd force, stiffness or damping is held to the
+  // datasheet's.
+  auto bound = [&reported](double& value, double table_value, const char* field) {
+    if (value == 0.0) {  // not reported
+      value = table_value;
+    } else if (!(value > 0.0 && value <= table_value)) {
+      value = table_value;
+      reported.bounded_fields.emplace_back(field);
+    }
+  };
   if (reported.model.empty()) reported.model = table.model;
   if (reported.vendor.empty()) reported.vendor = table.vendor;
-  fill(reported.max_force_n, table.max_force_n);
-  fill(reported.max_continuous_force_n, table.max_continuous_force_n);
-  fill(reported.max_stiffness_n_per_m, table.max_stiffness_n_per_m);
-  fill(reported.max_damping_ns_per_m, table.max_damping_ns_per_m);
+  bound(reported.max_force_n, table.max_force_n, "max_force_n");
+  bound(reported.max_continuous_force_n, table.max_continuous_force_n, "max_continuous_force_n");
+  bound(reported.max_stiffness_n_per_m, table.max_stiffness_n_per_m, "max_stiffness_n_per_m");
+  bound(reported.max_damping_ns_per_m, table.max_damping_ns_per_m, "max_damping_ns_per_m");
   fill(reported.position_resolution_m, table.position_resolution_m);
   fill(reported.nominal_rate_hz, table.nominal_rate_hz);
-  if (reported.workspace_min_m.isZero() && reported.workspace_max_m.isZero()) {
+  const bool box_reported = !(reported.workspace_min_m.isZero() && reported.workspace_max_m.isZero());
+  if (box_reported && !(reported.workspace_min_m.allFinite() && reported.workspace_max_m.allFinite())) {
+    reported.bounded_fields.emplace_back("workspace");
+  }
+  if (!box_reported || !(reported.workspace_min_m.allFinite() && reported.workspace_max_m.allFinite())) {
     reported.workspace_min_m = table.workspace_min_m;
     reported.workspace_max_m = table.workspace_max_m;
   }

@@ -41,6 +41,7 @@ double HapticDevice::force_limit_n() const { return safety_ ? safety_->force_lim
 DeviceStatus HapticDevice::Start(ServoClient& client) {
   if (!open_ || running_) return DeviceStatus::kInvalidState;
   client_ = &client;
+  client.OnStart();
   safety_->Restart();
   recorder_.Start(safety_->period(), Paced(), Realtime());
   const DeviceStatus status = StartServo();
@@ -67,7 +68,7 @@ Eigen::Vector3d HapticDevice::ServoTick(const DeviceState& state) noexcept {
   if (recorder_.stats().ticks == 0) recorder_.MarkRealtime(Realtime());
   ForceCommand command;
   // A state the device got wrong is not shown to the client; the safety layer zeroes the force.
-  if (state.position_m.allFinite() && state.velocity_m_s.allFinite()) {
+  if (SafetyLayer::Usable(state)) {
     client_->Tick(state, command);
   } else {
     command.valid = false;
@@ -76,6 +77,11 @@ Eigen::Vector3d HapticDevice::ServoTick(const DeviceState& state) noexcept {
   recorder_.Record(start_s, (NowSeconds() - start_s) * 1e6);
   if (recorder_.stats().ticks % kPublishEvery == 0) PublishFigures();
   return force;
+}
+
+Eigen::Vector3d HapticDevice::ServoRampDown(bool& at_rest) noexcept {
+  at_rest = safety_->RampDown();
+  return safety_->last_output();
 }
 
 void HapticDevice::PublishFigures() {

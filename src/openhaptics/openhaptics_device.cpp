@@ -3,10 +3,12 @@
 #include <HD/hd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 namespace cosmems {
 namespace {
@@ -98,7 +100,9 @@ struct OpenHapticsDevice::Session {
 
   // Shared.
   std::atomic<HDenum> calibration{HD_CALIBRATION_OK};
-  std::atomic<bool> ended{false};
+  std::atomic<bool> ended{false};     // a scheduler error ended the callback
+  std::atomic<bool> stopping{false};  // StopServo() asks the ticks to ramp the force down
+  std::atomic<bool> ramped{false};    // the force is zero and its output off; the callback ended
   std::atomic<std::uint64_t> error{0};  // errorCode << 32 | internalErrorCode, in one piece
 
   void Record(const HDErrorInfo& e) {
@@ -146,10 +150,19 @@ HDCallbackCode OpenHapticsDevice::Session::Tick(OpenHapticsDevice& owner) noexce
     calibration.store(Calibrate(calibration_styles), std::memory_order_relaxed);
   }
 
-  const Eigen::Vector3d force_n = owner.ServoTick(state);
+  bool at_rest = false;
+  const bool stop = stopping.load(std::memory_order_acquire);
+  const Eigen::Vector3d force_n = stop ? owner.ServoRampDown(at_rest) : owner.ServoTick(state);
   hdSetDoublev(HD_CURRENT_FORCE, force_n.data());
   hdEndFrame(device);
   ++tick;
+  if (at_rest) {
+    // The zero force is latched: the motors go off before the scheduler stops.
+    hdDisable(HD_FORCE_OUTPUT);
+    Triage();
+    ramped.store(true, std::memory_order_release);
+    return HD_CALLBACK_DONE;
+  }
   return Triage();
 }
 
@@ -273,6 +286,8 @@ DeviceStatus OpenHapticsDevice::StartServo() {
   s.tick = 0;
   s.fault_pending = false;
   s.ended.store(false);
+  s.stopping.store(false);
+  s.ramped.store(false);
   s.servo = hdScheduleAsynchronous(&Session::Servo, this, HD_MAX_SCHEDULER_PRIORITY);
   error = DrainErrors();
   if (HD_DEVICE_ERROR(error)) {
@@ -292,12 +307,27 @@ DeviceStatus OpenHapticsDevice::StartServo() {
   return DeviceStatus::kOk;
 }
 
-// The SDK's shutdown order: stop the scheduler (no tick runs after it returns), then remove the
-// callback, unless it already removed itself by returning HD_CALLBACK_DONE.
+// The stop: the servo ticks bring the force down along the slew limit, latch zero and turn the
+// force output off, and the callback ends itself (Session::Tick). Then the SDK's shutdown order:
+// stop the scheduler (no tick runs after it returns), remove the callback unless it has ended.
+// A scheduler that no longer ticks cannot ramp: after the ramp's time (with slack for a loaded
+// machine) the output is turned off once the scheduler has stopped.
 void OpenHapticsDevice::StopServo() noexcept {
   Session& s = *session_;
+  s.stopping.store(true, std::memory_order_release);
+  const double ramp_s = static_cast<double>(MaxRampDownTicks() + 1) / s.rate_hz;
+  const auto deadline = std::chrono::steady_clock::now() +
+                        std::chrono::duration<double>(4.0 * ramp_s + 0.1);
+  while (!s.ramped.load(std::memory_order_acquire) && !s.ended.load() &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
   hdStopScheduler();
-  if (!s.ended.load()) hdUnschedule(s.servo);
+  if (!s.ended.load() && !s.ramped.load()) hdUnschedule(s.servo);
+  if (!s.ramped.load()) {
+    hdMakeCurrentDevice(s.device);
+    hdDisable(HD_FORCE_OUTPUT);
+  }
   s.Record(DrainErrors());
   s.running = false;
 }

@@ -6,11 +6,12 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <string>
 
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_error.hpp"
 #include "key_origins.hpp"
+#include "scene_limits.hpp"
 #include "scene_reader.hpp"
 #include "toml_override.hpp"
 
@@ -23,19 +24,33 @@ std::string Trim(const std::string& text) {
   return text.substr(begin, text.find_last_not_of(" \t") - begin + 1);
 }
 
+// A regular file of at most kMaxSceneBytes. Anything else (a FIFO, a device such as /dev/zero)
+// could be read without end, so it is refused before it is opened; and since a file may grow
+// after its size is asked, reading stops one byte past the limit instead of trusting the size.
 std::string ReadFile(const std::string& path) {
   std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (std::filesystem::is_directory(status)) {
     throw SceneError(path, "", "", "is a directory, not a scene file");
+  }
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw SceneError(path, "", "",
+                     "not a regular file (a FIFO, socket or device), not a scene file");
   }
   std::ifstream file(path, std::ios::binary);
   if (!file) {
     throw SceneError(path, "", "", std::string("cannot open scene file: ") + std::strerror(errno));
   }
-  std::ostringstream text;
-  text << file.rdbuf();
+  std::string text(internal::kMaxSceneBytes + 1, '\0');
+  file.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (file.bad()) throw SceneError(path, "", "", "cannot read scene file");
-  return text.str();
+  text.resize(static_cast<std::size_t>(file.gcount()));
+  if (text.size() > internal::kMaxSceneBytes) {
+    throw SceneError(path, "", "",
+                     "larger than " + std::to_string(internal::kMaxSceneBytes) +
+                         " bytes (1 MiB), the most a scene file may hold");
+  }
+  return text;
 }
 
 std::string EmbeddedSceneNames() {

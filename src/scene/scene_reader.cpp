@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "scene_limits.hpp"
 #include "toml_field_reader.hpp"
 #include "toml_format.hpp"
 
@@ -29,24 +30,16 @@ constexpr std::array kInitialStates = {InitialState::kRest, InitialState::kStati
 constexpr std::array kTimeFunctions = {TimeFunctionKind::kStep, TimeFunctionKind::kRamp,
                                        TimeFunctionKind::kSine};
 
-// Guards against a typo such as 20000000 exhausting memory; far beyond any useful mesh of one
-// beam (the power-series elements converge with a handful).
-constexpr int kMaxElements = 100000;
-constexpr int kMaxSeriesOrder = 6;
-// Guards against a typo in duration or time_step: a run this long would take hours and keep a
-// timing sample (8 bytes) per step.
-constexpr double kMaxSteps = 1e8;
-
 SceneStructure ReadStructure(const TomlFieldReader& r) {
   r.RequireTable("structure");
   r.RejectUnknownKeys("structure", {"kind", "length", "width", "thickness", "gap", "axial_load"});
   SceneStructure s;
   s.kind = r.RequiredChoice("structure.kind", kStructureKinds, "structure kind");
-  s.length = r.RequiredPositive("structure.length");
-  s.width = r.RequiredPositive("structure.width");
-  s.thickness = r.RequiredPositive("structure.thickness");
-  s.gap = r.OptionalPositive("structure.gap");
-  s.axial_load = r.Number("structure.axial_load", s.axial_load);
+  s.length = r.RequiredPositive("structure.length", kLength);
+  s.width = r.RequiredPositive("structure.width", kLength);
+  s.thickness = r.RequiredPositive("structure.thickness", kLength);
+  s.gap = r.OptionalPositive("structure.gap", kLength);
+  s.axial_load = r.OptionalNumber("structure.axial_load", kForce).value_or(s.axial_load);
   return s;
 }
 
@@ -54,8 +47,8 @@ SceneMaterial ReadMaterial(const TomlFieldReader& r) {
   r.RequireTable("material");
   r.RejectUnknownKeys("material", {"young_modulus", "density", "poisson_ratio", "plate_modulus"});
   SceneMaterial m;
-  m.young_modulus = r.RequiredPositive("material.young_modulus");
-  m.density = r.RequiredPositive("material.density");
+  m.young_modulus = r.RequiredPositive("material.young_modulus", kYoungModulus);
+  m.density = r.RequiredPositive("material.density", kDensity);
   m.poisson_ratio = r.Number("material.poisson_ratio", m.poisson_ratio);
   r.Require(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "material.poisson_ratio",
             "must lie in (-1, 0.5)");
@@ -79,12 +72,18 @@ SceneModel ReadModel(const TomlFieldReader& r) {
             "must lie in 0 ... " + std::to_string(kMaxSeriesOrder));
   m.modes = r.Integer("model.modes", m.modes);
   r.Require(m.modes >= 0, "model.modes", "must be non-negative");
+  r.Require(m.modes <= kMaxModes, "model.modes", "must be at most " + std::to_string(kMaxModes));
   return m;
 }
 
-Eigen::Vector3d ReadVector3(const TomlFieldReader& r, const std::string& key) {
+// Each component within `bounds`.
+Eigen::Vector3d ReadVector3(const TomlFieldReader& r, const std::string& key,
+                            const Bounds& bounds) {
   const std::optional<std::vector<double>> values = r.OptionalNumbers(key, 3);
   if (!values) return Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < values->size(); ++i) {
+    r.RequireWithin(key + "[" + std::to_string(i) + "]", (*values)[i], bounds);
+  }
   return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
 }
 
@@ -112,11 +111,13 @@ std::optional<SceneTimeFunction> ReadTimeFunction(const TomlFieldReader& r) {
   if (chosen == TimeFunctionKind::kRamp) {
     r.Require(ramp_time.has_value(), "loads.time_function", "needs loads.ramp_time (s, > 0)");
     r.Require(*ramp_time > 0.0, "loads.ramp_time", "must be positive");
+    r.RequireWithin("loads.ramp_time", *ramp_time, kTime);
     f.ramp_time = *ramp_time;
   }
   if (chosen == TimeFunctionKind::kSine) {
     r.Require(frequency.has_value(), "loads.time_function", "needs loads.frequency (Hz, > 0)");
     r.Require(*frequency > 0.0, "loads.frequency", "must be positive");
+    r.RequireWithin("loads.frequency", *frequency, kFrequency);
     f.frequency = *frequency;
   }
   if (!kind) return std::nullopt;
@@ -128,10 +129,10 @@ SceneLoads ReadLoads(const TomlFieldReader& r) {
   if (!r.HasTable("loads")) return l;
   r.RejectUnknownKeys("loads", {"tip_force", "midspan_force", "distributed", "tip_moment",
                                 "time_function", "ramp_time", "frequency"});
-  l.tip_force = ReadVector3(r, "loads.tip_force");
-  l.midspan_force = ReadVector3(r, "loads.midspan_force");
-  l.distributed = ReadVector3(r, "loads.distributed");
-  l.tip_moment = ReadVector3(r, "loads.tip_moment");
+  l.tip_force = ReadVector3(r, "loads.tip_force", kForce);
+  l.midspan_force = ReadVector3(r, "loads.midspan_force", kForce);
+  l.distributed = ReadVector3(r, "loads.distributed", kForcePerLength);
+  l.tip_moment = ReadVector3(r, "loads.tip_moment", kMoment);
   l.time_function = ReadTimeFunction(r);
   return l;
 }
@@ -160,16 +161,16 @@ std::optional<ContactEffect> ReadContact(const TomlFieldReader& r) {
   if (!HasEffect(r, "contact", {"enabled", "separation", "tolerance", "proximity"}, c.enabled)) {
     return std::nullopt;
   }
-  c.separation = r.OptionalNonNegative("effects.contact.separation");
-  c.tolerance = r.OptionalPositive("effects.contact.tolerance");
-  c.proximity = r.OptionalPositive("effects.contact.proximity");
+  c.separation = r.OptionalNonNegative("effects.contact.separation", kLengthOrZero);
+  c.tolerance = r.OptionalPositive("effects.contact.tolerance", kLength);
+  c.proximity = r.OptionalPositive("effects.contact.proximity", kLength);
   return c;
 }
 
 std::optional<StictionEffect> ReadStiction(const TomlFieldReader& r) {
   StictionEffect s;
   if (!HasEffect(r, "stiction", {"enabled", "adhesion_energy"}, s.enabled)) return std::nullopt;
-  s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy");
+  s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy", kAdhesionEnergy);
   return s;
 }
 
@@ -181,7 +182,7 @@ std::optional<ElectrostaticEffect> ReadElectrostatic(const TomlFieldReader& r,
                  s.enabled)) {
     return std::nullopt;
   }
-  s.voltage = r.OptionalNumber("effects.electrostatic.voltage");
+  s.voltage = r.OptionalNumber("effects.electrostatic.voltage", kVoltage);
   s.fringing = r.Boolean("effects.electrostatic.fringing", s.fringing);
   s.electrode_start = ReadPositionOnBeam(r, "effects.electrostatic.electrode_start", structure);
   s.electrode_end = ReadPositionOnBeam(r, "effects.electrostatic.electrode_end", structure);
@@ -199,7 +200,7 @@ std::optional<CasimirEffect> ReadCasimir(const TomlFieldReader& r) {
 std::optional<VanDerWaalsEffect> ReadVanDerWaals(const TomlFieldReader& r) {
   VanDerWaalsEffect v;
   if (!HasEffect(r, "van_der_waals", {"enabled", "hamaker"}, v.enabled)) return std::nullopt;
-  v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker");
+  v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker", kHamaker);
   return v;
 }
 
@@ -208,10 +209,12 @@ std::optional<DampingEffect> ReadDamping(const TomlFieldReader& r) {
   if (!HasEffect(r, "damping", {"enabled", "quality_factor", "rayleigh"}, d.enabled)) {
     return std::nullopt;
   }
-  d.quality_factor = r.OptionalPositive("effects.damping.quality_factor");
+  d.quality_factor = r.OptionalPositive("effects.damping.quality_factor", kQualityFactor);
   if (const auto rayleigh = r.OptionalNumbers("effects.damping.rayleigh", 2)) {
     r.Require((*rayleigh)[0] >= 0.0 && (*rayleigh)[1] >= 0.0, "effects.damping.rayleigh",
               "alpha and beta must be non-negative");
+    r.RequireWithin("effects.damping.rayleigh[0]", (*rayleigh)[0], kRayleighAlpha);
+    r.RequireWithin("effects.damping.rayleigh[1]", (*rayleigh)[1], kRayleighBeta);
     r.Require(!d.quality_factor, "effects.damping.rayleigh",
               "give quality_factor or rayleigh, not both");
     d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
@@ -227,8 +230,8 @@ std::optional<SqueezeFilmEffect> ReadSqueezeFilm(const TomlFieldReader& r) {
   if (!HasEffect(r, "squeeze_film", {"enabled", "viscosity", "mean_free_path"}, s.enabled)) {
     return std::nullopt;
   }
-  s.viscosity = r.OptionalPositive("effects.squeeze_film.viscosity");
-  s.mean_free_path = r.OptionalNonNegative("effects.squeeze_film.mean_free_path");
+  s.viscosity = r.OptionalPositive("effects.squeeze_film.viscosity", kViscosity);
+  s.mean_free_path = r.OptionalNonNegative("effects.squeeze_film.mean_free_path", kLengthOrZero);
   return s;
 }
 
@@ -260,8 +263,8 @@ struct IntegratorParameter {
 };
 
 void ReadTransient(const TomlFieldReader& r, SceneAnalysis& a) {
-  a.duration = r.RequiredPositive("analysis.duration");
-  a.time_step = r.RequiredPositive("analysis.time_step");
+  a.duration = r.RequiredPositive("analysis.duration", kTime);
+  a.time_step = r.RequiredPositive("analysis.time_step", kTime);
   r.Require(a.time_step <= a.duration, "analysis.time_step",
             "must not exceed analysis.duration = " + FormatNumber(a.duration));
   r.Require(std::round(a.duration / a.time_step) <= kMaxSteps, "analysis.time_step",
@@ -299,15 +302,19 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   if (a.type == AnalysisType::kModal) {
     a.count = r.Integer("analysis.count", a.count);
     r.Require(a.count >= 1, "analysis.count", "must be at least 1");
+    r.Require(a.count <= kMaxModes, "analysis.count",
+              "must be at most " + std::to_string(kMaxModes));
   }
   if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
   if (a.type == AnalysisType::kHaptic) {
-    a.duration = r.OptionalPositive("analysis.duration").value_or(0.0);
+    a.duration = r.OptionalPositive("analysis.duration", kHapticDuration).value_or(0.0);
     a.rate = r.Number("analysis.rate", a.rate);
     r.Require(a.rate == 500.0 || a.rate == 1000.0 || a.rate == 2000.0, "analysis.rate",
               "must be 500, 1000 or 2000 (Hz: the rates haptic devices run at)");
   }
-  if (a.type == AnalysisType::kPullin) a.voltage_max = r.OptionalPositive("analysis.voltage_max");
+  if (a.type == AnalysisType::kPullin) {
+    a.voltage_max = r.OptionalPositive("analysis.voltage_max", kVoltageMax);
+  }
   return a;
 }
 
@@ -321,10 +328,10 @@ std::optional<SceneDevice> ReadDevice(const TomlFieldReader& r) {
   d.trajectory = r.OptionalString("device.trajectory").value_or(d.trajectory);
   r.Require(!d.trajectory.empty(), "device.trajectory", "must not be empty");
   d.realtime = r.Boolean("device.realtime", d.realtime);
-  d.position_scale = r.OptionalPositive("device.position_scale");
-  d.force_scale = r.OptionalPositive("device.force_scale");
-  d.coupling_stiffness = r.OptionalPositive("device.coupling_stiffness");
-  d.probe_radius = r.OptionalPositive("device.probe_radius");
+  d.position_scale = r.OptionalPositive("device.position_scale", kScale);
+  d.force_scale = r.OptionalPositive("device.force_scale", kScale);
+  d.coupling_stiffness = r.OptionalPositive("device.coupling_stiffness", kStiffness);
+  d.probe_radius = r.OptionalPositive("device.probe_radius", kLength);
   return d;
 }
 

@@ -122,6 +122,41 @@ std::optional<double> TomlFieldReader::OptionalNonNegative(const std::string& ke
   return value;
 }
 
+void TomlFieldReader::RequireWithin(const std::string& key, double value,
+                                    const Bounds& bounds) const {
+  const std::string unit = *bounds.unit != '\0' ? std::string(" ") + bounds.unit : "";
+  Require(value >= bounds.lower && value <= bounds.upper, key,
+          "must lie in [" + FormatNumber(bounds.lower) + ", " + FormatNumber(bounds.upper) + "]" +
+              unit);
+}
+
+std::optional<double> TomlFieldReader::OptionalNumber(const std::string& key,
+                                                      const Bounds& bounds) const {
+  const std::optional<double> value = OptionalNumber(key);
+  if (value) RequireWithin(key, *value, bounds);
+  return value;
+}
+
+double TomlFieldReader::RequiredPositive(const std::string& key, const Bounds& bounds) const {
+  const double value = RequiredPositive(key);
+  RequireWithin(key, value, bounds);
+  return value;
+}
+
+std::optional<double> TomlFieldReader::OptionalPositive(const std::string& key,
+                                                        const Bounds& bounds) const {
+  const std::optional<double> value = OptionalPositive(key);
+  if (value) RequireWithin(key, *value, bounds);
+  return value;
+}
+
+std::optional<double> TomlFieldReader::OptionalNonNegative(const std::string& key,
+                                                           const Bounds& bounds) const {
+  const std::optional<double> value = OptionalNonNegative(key);
+  if (value) RequireWithin(key, *value, bounds);
+  return value;
+}
+
 int TomlFieldReader::Integer(const std::string& key, int fallback) const {
   const toml::node* node = Find(key);
   if (node == nullptr) return fallback;

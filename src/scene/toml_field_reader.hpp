@@ -13,6 +13,13 @@
 
 namespace cosmems::internal {
 
+/// A closed range of accepted values and its unit as messages spell it ("" for none).
+struct Bounds {
+  double lower;
+  double upper;
+  const char* unit;
+};
+
 /// Typed access to a parsed scene by dotted key ("structure.length"). Every failure throws a
 /// SceneError naming the key's origin, the key and its value.
 ///
@@ -55,6 +62,14 @@ class TomlFieldReader {
   std::optional<double> OptionalPositive(const std::string& key) const;
   /// An optional number >= 0.
   std::optional<double> OptionalNonNegative(const std::string& key) const;
+
+  /// Throws "must lie in [LOWER, UPPER] UNIT" unless `value`, read at `key`, is within `bounds`.
+  void RequireWithin(const std::string& key, double value, const Bounds& bounds) const;
+  /// The readers above, then RequireWithin.
+  std::optional<double> OptionalNumber(const std::string& key, const Bounds& bounds) const;
+  double RequiredPositive(const std::string& key, const Bounds& bounds) const;
+  std::optional<double> OptionalPositive(const std::string& key, const Bounds& bounds) const;
+  std::optional<double> OptionalNonNegative(const std::string& key, const Bounds& bounds) const;
 
   int Integer(const std::string& key, int fallback) const;
   bool Boolean(const std::string& key, bool fallback) const;

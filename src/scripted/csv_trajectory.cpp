@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
+#include <istream>
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
@@ -14,6 +17,10 @@ namespace {
 
 constexpr const char* kColumns[] = {"time_s", "x_m", "y_m", "z_m"};
 constexpr int kColumnCount = 4;
+// A recorded run of the longest haptic session (3600 s at 2 kHz, ~130 bytes a row) fits well
+// within these; a file past them is refused rather than read into memory.
+constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{1} << 30;
+constexpr std::size_t kMaxRows = 10'000'000;
 
 /// Samples interpolated linearly, held outside their time span.
 class CsvTrajectory final : public Trajectory {
@@ -99,17 +106,14 @@ double ParseField(std::string_view text, int column, long line, const CsvErrors&
 
 }  // namespace
 
-std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path) {
-  const CsvErrors errors(path);
-  std::ifstream file(path);
-  if (!file) errors.Throw(0, "cannot open the trajectory file");
-
+std::unique_ptr<Trajectory> ReadCsvTrajectory(std::istream& in, const std::string& name) {
+  const CsvErrors errors(name);
   std::string text;
   long line = 0;
   std::size_t columns = 0;
   std::vector<double> times;
   std::vector<Eigen::Vector3d> positions;
-  while (std::getline(file, text)) {
+  while (std::getline(in, text)) {
     ++line;
     if (line > 1 && Trim(text).empty()) continue;
     const std::vector<std::string_view> fields = SplitFields(text);
@@ -121,6 +125,9 @@ std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path) {
     if (fields.size() != columns) {
       errors.Throw(line, std::to_string(fields.size()) + " fields, expected " +
                              std::to_string(columns) + " as in the header");
+    }
+    if (times.size() == kMaxRows) {
+      errors.Throw(line, "more than " + std::to_string(kMaxRows) + " rows");
     }
     double row[kColumnCount];
     for (int c = 0; c < kColumnCount; ++c) {
@@ -135,9 +142,29 @@ std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path) {
     times.push_back(row[0]);
     positions.emplace_back(row[1], row[2], row[3]);
   }
+  if (in.bad()) errors.Throw(line, "read error");
   if (line == 0) errors.Throw(1, "the header row time_s,x_m,y_m,z_m is missing (empty file)");
   if (times.empty()) errors.Throw(0, "no data rows after the header");
   return std::make_unique<CsvTrajectory>(std::move(times), std::move(positions));
+}
+
+std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path) {
+  const CsvErrors errors(path);
+  // A FIFO or a device (/dev/zero) would be read for ever: only a regular file of bounded size.
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    errors.Throw(0, std::filesystem::exists(path, error)
+                        ? "not a regular file (a trajectory is a CSV file)"
+                        : "cannot open the trajectory file");
+  }
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error || bytes > kMaxFileBytes) {
+    errors.Throw(0, "the trajectory file is larger than " + std::to_string(kMaxFileBytes) +
+                        " bytes");
+  }
+  std::ifstream file(path);
+  if (!file) errors.Throw(0, "cannot open the trajectory file");
+  return ReadCsvTrajectory(file, path);
 }
 
 }  // namespace cosmems

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "cosmems/haptics/built_in_specs.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/haptics/realtime_thread.hpp"
 
@@ -31,12 +32,25 @@ std::uint64_t TicksOver(double duration_s, double rate_hz) {
   return static_cast<std::uint64_t>(last) + 1;
 }
 
+// A recorded run keeps every tick (80 bytes) from Start(): beyond 1e7 ticks (800 MB, 2.8 hours
+// at 1 kHz) a script is refused rather than left to exhaust memory.
+constexpr std::uint64_t kMaxRecordedTicks = 10'000'000;
+
 }  // namespace
 
 ScriptedDevice::ScriptedDevice(std::unique_ptr<const Trajectory> trajectory,
                                const ScriptedOptions& options)
     : HapticDevice(options.safety), trajectory_(Checked(std::move(trajectory))), options_(options) {
   options_.Validate();
+  DeviceSpecs specs = options_.specs;
+  CompleteSpecs(specs);
+  const std::uint64_t ticks = TicksOver(trajectory_->Duration(), specs.nominal_rate_hz);
+  if (options_.record && ticks > kMaxRecordedTicks) {
+    throw std::invalid_argument("scripted device: trajectory Duration() = " +
+                                std::to_string(trajectory_->Duration()) + " s is " +
+                                std::to_string(ticks) + " ticks; a recorded run takes at most " +
+                                std::to_string(kMaxRecordedTicks));
+  }
   realtime_note_ = options_.clock == ScriptedClock::kPaced
                        ? "not started"
                        : "real-time scheduling is asked for by the paced clock only: a thread "
@@ -68,7 +82,8 @@ DeviceStatus ScriptedDevice::StartServo() {
   hand_ = SpringHand(options_.spring, 1.0 / rate_hz_);
   hand_.Reset(trajectory_->Position(0.0));
   // Filling the rows now, not just reserving them, also faults their pages in before the loop.
-  samples_.assign(options_.record ? total_ticks_ : 0, ScriptedSample{});
+  // The stop's ramp follows the script's ticks.
+  samples_.assign(options_.record ? total_ticks_ + MaxRampDownTicks() : 0, ScriptedSample{});
   if (options_.clock == ScriptedClock::kManual) return DeviceStatus::kOk;
 
   {
@@ -106,9 +121,14 @@ DeviceStatus ScriptedDevice::StartServo() {
   return DeviceStatus::kOk;
 }
 
+// The servo thread ramps the force down itself once it sees the request; on the manual clock
+// this thread runs the ramp's ticks (at most MaxRampDownTicks()).
 void ScriptedDevice::StopServo() noexcept {
   stop_requested_.store(true, std::memory_order_release);
   if (thread_.joinable()) thread_.join();
+  if (options_.clock == ScriptedClock::kManual) {
+    while (!Finished()) Tick();
+  }
 }
 
 std::uint64_t ScriptedDevice::Step(std::uint64_t n) {
@@ -128,27 +148,33 @@ void ScriptedDevice::WaitUntilDone() {
 
 void ScriptedDevice::RunPaced() noexcept {
   PeriodicDeadline deadline(rate_hz_);
-  while (Continue()) {
+  while (!Finished()) {
     Tick();
     deadline.SleepUntilNext();
   }
 }
 
 void ScriptedDevice::RunFast() noexcept {
-  while (Continue()) Tick();
+  while (!Finished()) Tick();
 }
 
 void ScriptedDevice::Tick() noexcept {
   const std::uint64_t n = tick_;
+  // After the script's last tick, or once a stop is asked for, the force comes down to zero
+  // along the slew limit while the hand holds its last target.
+  const bool ramp = n >= total_ticks_ || stop_requested_.load(std::memory_order_acquire);
   const double t = static_cast<double>(n) / rate_hz_;
-  const Eigen::Vector3d target = trajectory_->Position(t);
+  Eigen::Vector3d target = previous_target_;
   // Backward difference, the velocity the script implies over the last tick; zero at the first
-  // tick and just after a non-finite position, where there is nothing finite to difference.
+  // tick, just after a non-finite position (nothing finite to difference) and in the ramp.
   Eigen::Vector3d target_velocity = Eigen::Vector3d::Zero();
-  if (n > 0 && previous_target_.allFinite()) {
-    target_velocity = (target - previous_target_) * rate_hz_;
+  if (!ramp) {
+    target = trajectory_->Position(t);
+    if (n > 0 && previous_target_.allFinite()) {
+      target_velocity = (target - previous_target_) * rate_hz_;
+    }
+    previous_target_ = target;
   }
-  previous_target_ = target;
 
   const bool spring = options_.hand == HandModel::kSpring;
   // A non-finite script point reaches the device state as it is (the safety layer's business);
@@ -160,14 +186,17 @@ void ScriptedDevice::Tick() noexcept {
   state.position_m = spring ? hand_.position() : target;
   state.velocity_m_s = spring ? hand_.velocity() : target_velocity;
 
-  const Eigen::Vector3d force = ServoTick(state);
+  bool at_rest = false;  // ForceAtRest() says it after the tick
+  const Eigen::Vector3d force = ramp ? ServoRampDown(at_rest) : ServoTick(state);
   if (spring) hand_.Step(target, target_velocity, force);
-  if (options_.record) {
+  if (n < samples_.size()) {
     samples_[n] = ScriptedSample{t, state.position_m, state.velocity_m_s, force};
   }
   tick_ = n + 1;
   ticks_.store(tick_, std::memory_order_release);  // publishes the row just written
-  if (tick_ >= total_ticks_) done_.store(true, std::memory_order_release);
+  // The script is over once its ticks have run and the force is zero after them (at once when
+  // it ended at zero: nothing to ramp down).
+  if (tick_ >= total_ticks_ && ForceAtRest()) done_.store(true, std::memory_order_release);
 }
 
 std::vector<ScriptedSample> ScriptedDevice::Recorded() const {

@@ -61,12 +61,21 @@ TEST(CosmemsBinaryTest, InvalidInputIsOneLineOnStderrAndExitTwo) {
   EXPECT_EQ(process.err, "cosmems: --set: structure.length = -2e-06: must be positive\n");
 }
 
+TEST(CosmemsBinaryTest, AnUnknownSceneIsNamedOnStderrWithExitTwo) {
+  const Process process = RunBinary("run no-such-scene");
+  EXPECT_EQ(process.code, 2);
+  EXPECT_EQ(process.out, "");
+  EXPECT_EQ(process.err.rfind("cosmems: no-such-scene: neither an embedded scene (", 0), 0u)
+      << process.err;
+  EXPECT_NE(process.err.find(") nor a scene file\n"), std::string::npos) << process.err;
+}
+
 TEST(CosmemsBinaryTest, NumericalFailurePrintsTheJsonAndExitsThree) {
-  // E = 1e-300 Pa: the deflection overflows (see RunCliTest.NumericalFailure...).
-  const Process process = RunBinary("run cantilever --json --set material.young_modulus=1e-300");
+  // No pull-in below the bound (see RunCliTest.NumericalFailure...).
+  const Process process = RunBinary("run cantilever-pullin --json --set analysis.voltage_max=10.0");
   EXPECT_EQ(process.code, 3);
   EXPECT_EQ(process.err, "");
-  EXPECT_EQ(nlohmann::json::parse(process.out).at("status"), "non-finite result");
+  EXPECT_EQ(nlohmann::json::parse(process.out).at("status"), "not converged");
 }
 
 TEST(CosmemsBinaryTest, TransientRunExitsZeroAndUnstableOneExitsThree) {

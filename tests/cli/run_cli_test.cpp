@@ -11,6 +11,7 @@
 #include "cosmems/core/status.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "scene/fifo_scene.hpp"
 #include "scene/scene_expectations.hpp"
 
 namespace cosmems {
@@ -301,31 +302,31 @@ TEST(RunCliTest, ModalOutWritesModesAndNormalisedShapes) {
   }
 }
 
-// A valid but absurd modulus: the deflection it implies, P L^3 / (3 E I) ~ 1e304 m and worse in
-// the solver's units, overflows, and the solver says so rather than returning garbage.
-const std::vector<std::string> kOverflowingScene = {"cantilever", "--set",
-                                                    "material.young_modulus=1e-300"};
+// A pull-in search bounded below the pull-in voltage finds no fold: a numerical status. (The
+// absurd modulus of 1e-300 Pa that once overflowed the deflection is invalid input now.)
+const std::vector<std::string> kUnconvergedScene = {"cantilever-pullin", "--set",
+                                                    "analysis.voltage_max=10.0"};
 
 TEST(RunCliTest, NumericalFailureStillPrintsTheJsonAndExitsThree) {
   const TempDirectory dir;
-  std::vector<std::string> args = kOverflowingScene;
+  std::vector<std::string> args = kUnconvergedScene;
   args.insert(args.end(), {"--out", (dir.path() / "results").string()});
   const nlohmann::json json = RunJson(args, 3);
-  EXPECT_EQ(json.at("status"), ToString(Status::kNonFinite));
-  EXPECT_EQ(json.at("model").at("dofs"), 120);
+  EXPECT_EQ(json.at("status"), ToString(Status::kNotConverged));
+  EXPECT_EQ(json.at("model").at("dofs"), 60);  // planar: 20 nodes, three dofs each
   EXPECT_TRUE(json.contains("wall_time_s"));
-  EXPECT_FALSE(json.contains("tip_displacement"));
-  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results" / "deflection.csv"));
+  EXPECT_FALSE(json.contains("pullin_voltage_v"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "results" / "pullin_shape.csv"));
 }
 
 TEST(RunCliTest, NumericalFailureSummarySaysWhy) {
-  std::vector<std::string> args = kOverflowingScene;
+  std::vector<std::string> args = kUnconvergedScene;
   args.insert(args.begin(), "run");
   const CliOutcome outcome = Cli(args);
   EXPECT_EQ(outcome.code, 3);
   EXPECT_EQ(outcome.err, "");
-  ExpectContains(outcome.out, std::string("status     ") + ToString(Status::kNonFinite));
-  EXPECT_EQ(outcome.out.find("tip deflection"), std::string::npos);
+  ExpectContains(outcome.out, std::string("status     ") + ToString(Status::kNotConverged));
+  EXPECT_EQ(outcome.out.find("pull-in voltage"), std::string::npos);
 }
 
 TEST(RunCliTest, ScenesListsEachEmbeddedSceneOnOneLine) {
@@ -397,6 +398,74 @@ TEST(RunCliTest, BadFilesAreOneLineWithExitTwo) {
   testing::WriteFile(wrong, text);
   EXPECT_EQ(InvalidInput({"run", wrong}),
             "cosmems: " + wrong + ": structure.length = -2e-06: must be positive\n");
+}
+
+// What the model cannot represent is invalid input, named with its bound, through --set as in a
+// file.
+TEST(RunCliTest, ValuesBeyondTheirBoundsAreOneLineWithExitTwo) {
+  EXPECT_EQ(InvalidInput({"run", "cantilever", "--set", "material.young_modulus=1e-300"}),
+            "cosmems: --set: material.young_modulus = 1e-300: must lie in [1, 1e+13] Pa\n");
+  EXPECT_EQ(InvalidInput({"run", "cantilever", "--set", "structure.thickness=1e-120"}),
+            "cosmems: --set: structure.thickness = 1e-120: must lie in [1e-12, 1] m\n");
+  EXPECT_EQ(InvalidInput({"run", "cantilever-modal", "--set", "analysis.count=2000000000"}),
+            "cosmems: --set: analysis.count = 2000000000: must be at most 100\n");
+  EXPECT_EQ(InvalidInput({"run", "cantilever-haptic", "--set", "analysis.duration=1e5"}),
+            "cosmems: --set: analysis.duration = 1e+05: must lie in [1e-15, 3600] s\n");
+  const TempDirectory dir;
+  const std::string thin = (dir.path() / "thin.toml").string();
+  std::string text(FindEmbeddedScene("cantilever")->toml);
+  text.replace(text.find("thickness = 2e-6"), 16, "thickness = 1e-120");
+  testing::WriteFile(thin, text);
+  EXPECT_EQ(InvalidInput({"run", thin}),
+            "cosmems: " + thin + ": structure.thickness = 1e-120: must lie in [1e-12, 1] m\n");
+}
+
+// Only a regular file of at most 1 MiB is read as a scene: a device or a FIFO could be read
+// without end, and anything larger is not a scene.
+TEST(RunCliTest, WhatIsNotASceneFileIsOneLineWithExitTwo) {
+  const std::string not_regular =
+      ": not a regular file (a FIFO, socket or device), not a scene file\n";
+  EXPECT_EQ(InvalidInput({"run", "/dev/zero"}), "cosmems: /dev/zero" + not_regular);
+  const TempDirectory dir;
+  const std::string scene(FindEmbeddedScene("cantilever")->toml);
+  const testing::FifoScene fifo(dir.path() / "fifo.toml", scene);
+  EXPECT_EQ(InvalidInput({"run", fifo.path(), "--json"}), "cosmems: " + fifo.path() + not_regular);
+  const std::string large = (dir.path() / "large.toml").string();
+  testing::WriteFile(large, scene + "#" + std::string(std::size_t{1} << 20, 'x') + "\n");
+  EXPECT_EQ(InvalidInput({"run", large}),
+            "cosmems: " + large +
+                ": larger than 1048576 bytes (1 MiB), the most a scene file may hold\n");
+}
+
+// Settings the analysis accepts but does not use are named in the warnings: the haptic analysis
+// presses the beam with the probe alone (the forces it sends are the same without them), and
+// only the haptic analysis has a stylus.
+TEST(RunCliTest, WarnsAboutSettingsTheHapticAnalysisIgnoresAndAStylusElsewhere) {
+  const std::vector<std::string> fast = {"cantilever-haptic", "--set", "device.realtime=false",
+                                         "--set", "analysis.duration=0.2"};
+  std::vector<std::string> args = fast;
+  args.insert(args.end(), {"--set", "loads.tip_force=[0, -1e-7, 0]", "--set",
+                           "effects.damping.quality_factor=100.0", "--set",
+                           "loads.time_function=ramp", "--set", "loads.ramp_time=1e-3"});
+  const nlohmann::json with = RunJson(args);
+  const nlohmann::json without = RunJson(fast);
+  EXPECT_EQ(without.at("warnings"), nlohmann::json::array());
+  EXPECT_EQ(with.at("max_device_force_n"), without.at("max_device_force_n"));
+  EXPECT_EQ(with.at("contact_events"), without.at("contact_events"));
+  const nlohmann::json& warnings = with.at("warnings");
+  ASSERT_EQ(warnings.size(), 3u) << warnings;
+  EXPECT_EQ(warnings[0],
+            "loads does not change a haptic analysis: the hand's probe is the only load on the "
+            "beam");
+  ExpectContains(warnings[1], "effects.damping does not change a haptic analysis: ");
+  EXPECT_EQ(warnings[2],
+            "loads.time_function = \"ramp\" does not change a haptic analysis: it sets how the "
+            "loads vary in transient analyses only");
+
+  const nlohmann::json static_run = RunJson({"cantilever-haptic", "--set", "analysis.type=static"});
+  EXPECT_EQ(static_run.at("warnings"),
+            nlohmann::json::array({"device does not change a static analysis: [device] is the "
+                                   "stylus of a haptic analysis only"}));
 }
 
 TEST(RunCliTest, UsageErrorsAreOneLineWithExitTwo) {

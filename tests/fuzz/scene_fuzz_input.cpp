@@ -1,8 +1,12 @@
 #include "scene_fuzz_input.hpp"
 
+#include <cosmems/beam/beam_model.hpp>
+#include <cosmems/rod/cosserat_rod.hpp>
 #include <cosmems/scene/scene_conversion.hpp>
 #include <cosmems/scene/scene_error.hpp>
 #include <cosmems/scene/scene_loader.hpp>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,10 +14,28 @@
 namespace cosmems::fuzz {
 namespace {
 
-// Every conversion the CLI makes before it builds a model: a scene the loader accepts must
-// convert without an error (the loader promises validated scenes).
+// The model a valid scene builds: its matrices must be finite (the loader refuses dimensions
+// and materials the internal units cannot represent). A failure aborts: the fuzzer's finding.
+template <int Dim>
+void BuildModel(const BeamDescription& description) {
+  const BeamModel<Dim> model(description);
+  if (!model.Stiffness().data().allFinite() || !model.Mass(0).data().allFinite()) {
+    std::fprintf(stderr, "a valid scene built a model with non-finite matrices\n");
+    std::abort();
+  }
+}
+
+// Every conversion the CLI makes, and the model it builds: a scene the loader accepts must
+// convert and build without an error (the loader promises validated scenes).
 void Convert(const Scene& scene) {
-  MakeBeamDescription(scene);
+  const BeamDescription description = MakeBeamDescription(scene);
+  if (scene.model.theory == Theory::kCosserat) {
+    const CosseratRod rod(description);
+  } else if (scene.model.dimension == 2) {
+    BuildModel<2>(description);
+  } else {
+    BuildModel<3>(description);
+  }
   MakeLoadCase(scene);
   MakeDampingModel(scene);
   MakeLoadTimeFunction(scene);

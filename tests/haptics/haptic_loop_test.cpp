@@ -1,14 +1,17 @@
 // The servo client that lets a hand touch the beam: the scaled force it asks for, the same
 // history run to run with the physics in the servo tick, and the physics on its own thread
-// (also run under ThreadSanitizer in cosmems_tsan_tests).
+// (also run under ThreadSanitizer in cosmems_tsan_tests), and a stalled physics thread seen
+// through a whole device.
 #include "cosmems/haptics/haptic_loop.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <memory>
 #include <thread>
 #include <vector>
 
+#include "cosmems/scripted/scripted_device.hpp"
 #include "haptic_test_beam.hpp"
 
 namespace cosmems {
@@ -113,6 +116,61 @@ TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   const double expected =
       2e5 * kProbeCoupling * k_tip / (kProbeCoupling + k_tip) * (1e-6 * 2.99 - 2e-6);
   EXPECT_NEAR(force, expected, 0.1 * expected);
+}
+
+/// The stylus held still where Stylus() is at `tick`.
+class HeldStylus final : public Trajectory {
+ public:
+  HeldStylus(const HapticLoopOptions& options, int tick)
+      : position_m_(Stylus(options, tick).position_m) {}
+  Eigen::Vector3d Position(double) const override { return position_m_; }
+  double Duration() const override { return 10.0; }
+
+ private:
+  Eigen::Vector3d position_m_;
+};
+
+// The whole loop (scripted device, safety layer, HapticLoop with its physics thread) when the
+// physics stalls: the model the servo renders ages, and once it is older than max_model_age_s
+// the force comes down to zero. A device started again (its clock back at 0) must not take the
+// model of the run before for a fresh one either.
+TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) {
+  const BeamModel<2> model = test::HapticCantilever();
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  const HapticLoopOptions options = Options(PhysicsThread::kOwn);
+  HapticLoop<2> loop(beam, options);
+  ScriptedOptions scripted;
+  scripted.clock = ScriptedClock::kManual;
+  scripted.safety.ramp_in_s = 0.0;
+  scripted.safety.slew_limit_n_per_s = 1e4;  // 10 N a tick: the force follows at once
+  ScriptedDevice device(std::make_unique<HeldStylus>(options, 2500), scripted);  // 0.5 um deep
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  loop.StartPhysics();
+  ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);
+  // The device ticks no faster than the physics thread, so the model stays fresh.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (device.Recorded().empty() || device.Recorded().back().force_n.y() <= 0.0) {
+    ASSERT_LT(std::chrono::steady_clock::now(), give_up) << "no force from the physics thread";
+    device.Step(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  const long stale_before = device.safety_counters().stale_forces;
+  loop.StopPhysics();  // the physics stalls; the servo ticks on
+  const std::uint64_t stalled_at = device.ticks();
+  device.Step(100);
+  std::vector<ScriptedSample> samples = device.Recorded();
+  EXPECT_GT(samples[stalled_at].force_n.y(), 0.0);  // a model 1 ms old is still rendered
+  EXPECT_EQ(samples.back().force_n.norm(), 0.0);
+  // 10 ms of age at 1 ms a tick, then every tick stale.
+  EXPECT_GE(device.safety_counters().stale_forces - stale_before, 85);
+
+  device.Stop();
+  ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);
+  device.Step(100);
+  samples = device.Recorded();
+  ASSERT_EQ(samples.size(), 100u);
+  for (const ScriptedSample& s : samples) ASSERT_EQ(s.force_n.norm(), 0.0) << s.time_s;
+  device.Stop();
 }
 
 // The panel's "Reset Failure": asked for from another thread while the beam lies stuck where the

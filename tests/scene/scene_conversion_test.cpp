@@ -2,6 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <utility>
+
+#include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/beam/beam_model.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 
 namespace cosmems {
@@ -165,6 +170,39 @@ TEST(SceneConversionTest, DampingOnlyWhenEnabled) {
   EXPECT_EQ(MakeDampingModel(Load("cantilever-release", {"effects.damping.enabled=false"})).kind,
             DampingModel::Kind::kNone);
   EXPECT_EQ(MakeDampingModel(Load("cantilever")).kind, DampingModel::Kind::kNone);
+}
+
+// The corners of the length, material and load bounds (src/scene/scene_limits.hpp) are accepted
+// and represented: internal units that are normal doubles, finite matrices and a finite static
+// deflection under the largest loads. The bounds refuse only what is beyond them.
+TEST(SceneConversionTest, TheCornersOfTheBoundsBuildFiniteModels) {
+  const std::pair<const char*, const char*> materials[] = {{"1.0", "1e5"}, {"1e13", "0.1"}};
+  for (const char* length : {"1e-12", "1.0"}) {
+    for (const char* width : {"1e-12", "1.0"}) {
+      for (const char* thickness : {"1e-12", "1.0"}) {
+        for (const auto& [modulus, density] : materials) {
+          const Scene scene = Load(
+              "cantilever",
+              {std::string("structure.length=") + length, std::string("structure.width=") + width,
+               std::string("structure.thickness=") + thickness,
+               std::string("material.young_modulus=") + modulus,
+               std::string("material.density=") + density, "loads.tip_force=[1e6, -1e6, 1e6]",
+               "loads.tip_moment=[1e6, 1e6, 1e6]", "loads.distributed=[-1e6, -1e6, -1e6]"});
+          SCOPED_TRACE(std::string(length) + " " + width + " " + thickness + " " + modulus + " " +
+                       density);
+          const BeamModel<3> model(MakeBeamDescription(scene));
+          EXPECT_TRUE(std::isnormal(model.units().force));
+          EXPECT_TRUE(std::isnormal(model.units().time));
+          EXPECT_TRUE(std::isnormal(model.units().Mass()));
+          EXPECT_TRUE(model.Stiffness().data().allFinite());
+          EXPECT_TRUE(model.Mass(0).data().allFinite());
+          const StaticSolution solution = SolveStatic(model, MakeLoadCase(scene));
+          EXPECT_EQ(solution.status, Status::kOk);
+          EXPECT_TRUE(solution.displacement.allFinite());
+        }
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cosmems/scene/scene_error.hpp"
+#include "fifo_scene.hpp"
 
 namespace cosmems {
 namespace {
@@ -97,6 +98,28 @@ TEST(SceneLoaderTest, RefusesADirectory) {
   const std::string directory = ::testing::TempDir();
   EXPECT_EQ(Message([&] { LoadSceneFile(directory); }),
             directory + ": is a directory, not a scene file");
+}
+
+// A FIFO or a device could be read without end: only regular files are read.
+TEST(SceneLoaderTest, RefusesWhatIsNotARegularFile) {
+  const std::string reason = ": not a regular file (a FIFO, socket or device), not a scene file";
+  EXPECT_EQ(Message([] { LoadSceneFile("/dev/null"); }), "/dev/null" + reason);
+  const testing::FifoScene fifo(std::filesystem::path(::testing::TempDir()) / "fifo_scene.toml",
+                                kMinimal);
+  EXPECT_EQ(Message([&] { LoadScene(fifo.path()); }), fifo.path() + reason);
+}
+
+// Scenes are a few hundred bytes: a file of 1 MiB is read, one byte more is refused by name.
+TEST(SceneLoaderTest, RefusesAFileLargerThanOneMebibyte) {
+  const std::size_t limit = std::size_t{1} << 20;
+  std::string text = kMinimal;
+  text += "#" + std::string(limit - text.size() - 2, 'x') + "\n";
+  ASSERT_EQ(text.size(), limit);
+  const TempFile largest("largest_scene.toml", text);
+  EXPECT_EQ(LoadSceneFile(largest.path()).structure.length, 1e-4);
+  const TempFile larger("larger_scene.toml", text + "\n");
+  EXPECT_EQ(Message([&] { LoadSceneFile(larger.path()); }),
+            larger.path() + ": larger than 1048576 bytes (1 MiB), the most a scene file may hold");
 }
 
 TEST(SceneLoaderTest, NamesTheEmbeddedScenesForAnUnknownName) {

@@ -1,7 +1,9 @@
 #include "cosmems/scripted/csv_trajectory.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -72,6 +74,24 @@ TEST(CsvTrajectoryTest, MissingFileIsNamed) {
     EXPECT_NE(std::string(error.what()).find(path + ": cannot open"), std::string::npos)
         << error.what();
   }
+}
+
+// A FIFO, a device or a directory would be read for ever (or not at all): each is refused by
+// name before a byte is read.
+TEST(CsvTrajectoryTest, OnlyARegularFileIsRead) {
+  const std::string fifo = ::testing::TempDir() + "cosmems_scripted_trajectory_fifo";
+  std::remove(fifo.c_str());
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  for (const std::string& path : {fifo, std::string("/dev/zero"), ::testing::TempDir()}) {
+    try {
+      LoadCsvTrajectory(path);
+      ADD_FAILURE() << path << ": no error";
+    } catch (const std::invalid_argument& error) {
+      EXPECT_NE(std::string(error.what()).find(path + ": not a regular file"), std::string::npos)
+          << error.what();
+    }
+  }
+  std::remove(fifo.c_str());
 }
 
 TEST(CsvTrajectoryTest, EmptyFileNeedsTheHeader) {

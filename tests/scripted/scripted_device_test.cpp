@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -11,7 +12,9 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
+#include "cosmems/haptics/safety_layer.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/csv_trajectory.hpp"
 #include "test_clients.hpp"
@@ -206,6 +209,99 @@ TEST(ScriptedDeviceTest, PacedClockStopsInTheMiddle) {
   std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_EQ(device.ticks(), ticks);  // nothing ticks after Stop()
   EXPECT_EQ(device.Recorded().size(), ticks);
+}
+
+/// Pushes up with 0.8 N whatever the stylus does: a force that is on when the loop stops. (Run
+/// with the passivity controller off, which would damp it while the stylus rises.)
+class PushClient final : public ServoClient {
+ public:
+  void Tick(const DeviceState&, ForceCommand& command) noexcept override {
+    command.force_n = Eigen::Vector3d(0.0, 0.8, 0.0);
+  }
+};
+
+/// The rows after `from`: each a slew step or less from the one before, the last zero, and no
+/// more of them than a ramp from the limit takes.
+void ExpectRampFrom(const std::vector<ScriptedSample>& samples, std::size_t from,
+                    const ScriptedDevice& device) {
+  const double slew = SafetyLayer(SafetyOptions{}, device.specs()).slew_per_tick();
+  ASSERT_GT(from, 0u);
+  ASSERT_GT(samples.size(), from);
+  EXPECT_NEAR(samples[from - 1].force_n.y(), 0.8, 1e-12);  // pushing when the stop came
+  for (std::size_t n = from; n < samples.size(); ++n) {
+    EXPECT_LE((samples[n].force_n - samples[n - 1].force_n).norm(), slew * (1.0 + 1e-12)) << n;
+  }
+  EXPECT_EQ(samples.back().force_n.norm(), 0.0);
+  EXPECT_EQ(samples.size() - from, 8u);  // 0.8 N at 0.1 N a tick
+  EXPECT_EQ(device.safety_counters().ramp_down_ticks,
+            static_cast<long>(samples.size() - from));
+}
+
+// Stopping the loop, or reaching the script's end, does not drop the force from where it is:
+// the device brings it down to zero along the slew limit while the hand holds still, on every
+// clock, and records the ramp's ticks.
+TEST(ScriptedDeviceTest, StopAndTheScriptsEndRampTheForceDown) {
+  PushClient client;
+  auto undamped = [](ScriptedClock clock) {
+    ScriptedOptions options = WithClock(clock);
+    options.safety.passivity_control = false;
+    return options;
+  };
+  {
+    ScriptedDevice device(Press(), undamped(ScriptedClock::kManual));
+    ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+    ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+    ASSERT_EQ(device.Step(640), 640u);  // past the 0.5 s ramp-in: 0.8 N
+    device.Stop();
+    EXPECT_FALSE(device.Done());  // stopped, not finished
+    ExpectRampFrom(device.Recorded(), 640, device);
+  }
+  for (ScriptedClock clock : {ScriptedClock::kManual, ScriptedClock::kFast}) {
+    ScriptedDevice device(Press(), undamped(clock));
+    ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+    ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+    if (clock == ScriptedClock::kManual) {
+      while (device.Step(97) > 0) {
+      }
+    } else {
+      device.WaitUntilDone();
+    }
+    EXPECT_TRUE(device.Done());
+    device.Stop();
+    ExpectRampFrom(device.Recorded(), 1001, device);  // the script's 1001 ticks, then the ramp
+  }
+}
+
+// The figures are read from other threads while the servo thread writes them (run under
+// ThreadSanitizer too): the tick count only grows and no snapshot shows a force above the limit.
+TEST(ScriptedDeviceTest, StatsAreReadWhileTheLoopRuns) {
+  MotionShape shape = ShortPress();
+  shape.cycles = 200;
+  PushClient client;
+  ScriptedDevice device(Press(shape), WithClock(ScriptedClock::kFast));
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+  std::vector<std::thread> readers;
+  std::atomic<bool> went_back{false};
+  for (int r = 0; r < 2; ++r) {
+    readers.emplace_back([&] {
+      std::uint64_t last = 0;
+      for (int i = 0; i < 200; ++i) {
+        const std::uint64_t ticks = device.stats().ticks;
+        if (ticks < last) went_back = true;
+        last = ticks;
+        if (device.safety_counters().max_force_n > device.force_limit_n() * (1.0 + 1e-12)) {
+          went_back = true;
+        }
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      }
+    });
+  }
+  for (std::thread& reader : readers) reader.join();
+  device.Stop();
+  EXPECT_FALSE(went_back);
+  EXPECT_GT(device.stats().ticks, 0u);
+  EXPECT_LE(device.safety_counters().ramp_down_ticks, device.MaxRampDownTicks());
 }
 
 TEST(ScriptedDeviceTest, DestructorStopsARunningThread) {

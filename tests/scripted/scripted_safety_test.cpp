@@ -13,6 +13,7 @@
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "table_trajectory.hpp"
+#include "extreme_values.hpp"
 #include "test_clients.hpp"
 
 namespace cosmems {
@@ -103,6 +104,17 @@ std::vector<Eigen::Vector3d> RandomMess(std::uint64_t seed) {
   return points;
 }
 
+/// Every 7th tick one coordinate jumps to an extreme value (test::ExtremeValues: magnitudes from
+/// 1e150 to the largest double, and denormals), whose backward difference overflows.
+std::vector<Eigen::Vector3d> Extremes() {
+  std::vector<Eigen::Vector3d> points = PressPoints();
+  const std::vector<double> extremes = test::ExtremeValues();
+  for (std::size_t n = 0; n < points.size(); n += 7) {
+    points[n][static_cast<int>(n / 7 % 3)] = extremes[n / 7 % extremes.size()];
+  }
+  return points;
+}
+
 struct Script {
   std::string name;
   std::vector<Eigen::Vector3d> points;
@@ -113,7 +125,8 @@ std::vector<Script> Scripts() {
           {"gaps", Gaps()},
           {"stalls", Stalls()},
           {"random 1", RandomMess(1)},
-          {"random 2", RandomMess(2)}};
+          {"random 2", RandomMess(2)},
+          {"extremes", Extremes()}};
 }
 
 /// The default safety settings, and a looser set: full peak force, ten times the slew rate, no
@@ -148,7 +161,10 @@ SafetyCounters CheckRun(const Script& script, HandModel hand, const SafetyOption
   const double limit = device.force_limit_n();
   const double slew = SafetyLayer(safety, device.specs()).slew_per_tick();
   const auto samples = device.Recorded();
-  EXPECT_EQ(samples.size(), script.points.size());
+  // The script's ticks, then the ramp that brings the force to zero at its end.
+  EXPECT_GE(samples.size(), script.points.size());
+  EXPECT_LE(samples.size(), script.points.size() + device.MaxRampDownTicks());
+  EXPECT_TRUE(samples.empty() || samples.back().force_n.isZero(0.0));
   Eigen::Vector3d previous = Eigen::Vector3d::Zero();  // the layer starts from zero force
   long breaches = 0;  // counted rather than asserted one by one, to report a few, not 2000
   for (std::size_t n = 0; n < samples.size(); ++n) {
@@ -156,7 +172,8 @@ SafetyCounters CheckRun(const Script& script, HandModel hand, const SafetyOption
     const bool ok = force.allFinite() && force.norm() <= limit * (1.0 + kRounding) &&
                     (force - previous).norm() <= slew * (1.0 + kRounding) &&
                     // Wherever the script is finite, so is the tip: the spring hand keeps no NaN.
-                    (!script.points[n].allFinite() || samples[n].position_m.allFinite());
+                    (n >= script.points.size() || !script.points[n].allFinite() ||
+                     samples[n].position_m.allFinite());
     if (!ok && ++breaches <= 3) {
       ADD_FAILURE() << "tick " << n << ": force " << force.transpose() << " after "
                     << previous.transpose() << " (limit " << limit << ", slew " << slew
@@ -168,8 +185,12 @@ SafetyCounters CheckRun(const Script& script, HandModel hand, const SafetyOption
   device.Stop();
   const SafetyCounters counters = device.safety_counters();
   EXPECT_LE(counters.max_force_n, limit * (1.0 + kRounding));
+  EXPECT_EQ(counters.output_guards, 0);  // the sanitised inputs never needed the last guard
   if (script.name == "gaps") {
     EXPECT_GT(counters.non_finite_states, 0);
+  }
+  if (script.name == "extremes" && hand == HandModel::kRigid) {
+    EXPECT_GT(counters.out_of_range_states, 0);
   }
   return counters;
 }

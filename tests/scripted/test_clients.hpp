@@ -4,8 +4,10 @@
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <vector>
 
 #include "cosmems/haptics/servo_client.hpp"
+#include "extreme_values.hpp"
 
 namespace cosmems {
 
@@ -29,7 +31,8 @@ class WallClient final : public ServoClient {
 /// A broken client. It alternates 800 ticks of large forces pointing anywhere (the clamp's and
 /// the slew limit's work: a fault restarts the safety layer's 0.5 s ramp-in, so faults must
 /// pause long enough for forces to grow) with 200 ticks of a random mix of huge, NaN, infinite,
-/// invalid and stale forces. Seeded, so a failure reproduces.
+/// invalid, stale, negative-age and extreme (test::ExtremeValues) forces. Seeded, so a failure
+/// reproduces.
 class ChaoticClient final : public ServoClient {
  public:
   explicit ChaoticClient(std::uint64_t seed) : random_(seed) {}
@@ -40,7 +43,7 @@ class ChaoticClient final : public ServoClient {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const bool faulty = ticks_++ % 1000 >= 800;
-    switch (faulty ? std::uniform_int_distribution<int>(0, 4)(random_) : 5) {
+    switch (faulty ? std::uniform_int_distribution<int>(0, 6)(random_) : 7) {
       case 0:
         command.force_n = 1e300 * direction;
         break;
@@ -58,6 +61,14 @@ class ChaoticClient final : public ServoClient {
         command.force_n = 1e3 * direction;
         command.age_s = 1.0;
         break;
+      case 5:
+        command.force_n = direction;
+        command.age_s = -1.0;
+        break;
+      case 6:
+        command.force_n = direction;
+        command.force_n[static_cast<int>(ticks_ % 3)] = extremes_[ticks_ % extremes_.size()];
+        break;
       default:
         command.force_n = 5.0 * direction;
         break;
@@ -67,6 +78,7 @@ class ChaoticClient final : public ServoClient {
  private:
   std::mt19937_64 random_;
   std::uint64_t ticks_ = 0;
+  std::vector<double> extremes_ = test::ExtremeValues();
 };
 
 }  // namespace cosmems

@@ -12,7 +12,9 @@ namespace cosmems {
 /// mechanism's own stiffness.
 DeviceSpecs BuiltInSpecs(const std::string& model);
 
-/// Fills every field a backend left at zero from BuiltInSpecs(reported.model).
+/// Fills every field a backend left at zero from BuiltInSpecs(reported.model), and holds the
+/// force, stiffness and damping to the table's values (a value above them, infinite or NaN is
+/// replaced and its name added to reported.bounded_fields; so is a non-finite workspace).
 void CompleteSpecs(DeviceSpecs& reported);
 
 }  // namespace cosmems

@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace cosmems {
 
@@ -20,6 +21,9 @@ struct DeviceSpecs {
   Eigen::Vector3d workspace_max_m = Eigen::Vector3d::Zero();  ///< usable box, upper corner
   double nominal_rate_hz = 1000.0;                            ///< servo rate the backend runs at
   int buttons = 0;
+  /// Fields the device reported beyond the built-in table (infinite, NaN or above the
+  /// datasheet), replaced by the table's values (CompleteSpecs).
+  std::vector<std::string> bounded_fields;
 };
 
 /// The device at one servo tick, in SI in the device frame (OpenHaptics' axes: x right, y up,

@@ -34,7 +34,7 @@ class HapticDevice {
   CalibrationStatus Calibration();
   /// Starts the servo loop with `client` (which must outlive Stop()); forces ramp in.
   DeviceStatus Start(ServoClient& client);
-  /// Zero force, loop stopped; idempotent.
+  /// Brings the force down to zero along the slew limit, then stops the loop; idempotent.
   void Stop() noexcept;
   /// Releases the device; idempotent (stops first).
   void Close() noexcept;
@@ -44,6 +44,8 @@ class HapticDevice {
   const DeviceSpecs& specs() const { return specs_; }
   /// The force limit the safety layer enforces [N] (after Open()).
   double force_limit_n() const;
+  /// The most ticks a stop's ramp takes (after Open()).
+  long MaxRampDownTicks() const { return safety_ ? safety_->MaxRampDownTicks() : 0; }
 
   /// Loop figures and safety counters: refreshed every 100 ticks while running, complete after
   /// Stop(). Callable from any thread but the servo thread.
@@ -56,7 +58,8 @@ class HapticDevice {
   virtual CalibrationStatus CheckCalibration() = 0;
   /// Begins calling ServoTick() once per tick on the servo thread.
   virtual DeviceStatus StartServo() = 0;
-  /// Ends the ticks; after it returns, ServoTick() is not running and will not run again.
+  /// Brings the force to zero with ticks of ServoRampDown() (at most MaxRampDownTicks()), then
+  /// ends the ticks; after it returns, no tick is running and none will run again.
   virtual void StopServo() noexcept = 0;
   virtual void CloseBackend() noexcept = 0;
   /// True when the ticks follow the wall clock (deadline misses count only then).
@@ -68,6 +71,11 @@ class HapticDevice {
   /// returns what to send [N, device frame]: finite, within the limit and the slew rate.
   /// Allocation-free and noexcept; call it only between StartServo() and StopServo().
   Eigen::Vector3d ServoTick(const DeviceState& state) noexcept;
+  /// One tick of a stop (the client is not asked): the force to send, one slew step nearer zero;
+  /// `at_rest` is true once it is zero. Allocation-free and noexcept.
+  Eigen::Vector3d ServoRampDown(bool& at_rest) noexcept;
+  /// True when the last force sent was zero (on the servo thread, or while no tick runs).
+  bool ForceAtRest() const { return safety_->last_output().isZero(0.0); }
 
  private:
   struct Figures {

@@ -72,6 +72,10 @@ class HapticLoop final : public ServoClient {
     command.force_n = options_.scaling.HandForce(model_.ForceAt(micro));
   }
 
+  /// Forgets the model rendered before a device (re)start: its source time is on the old
+  /// device clock, which starts again at 0.
+  void OnStart() noexcept override { model_ = LocalModel{}; }
+
   /// The paper's "Reset Failure" asked for from any thread (a button on the display side): the
   /// next physics tick resets the beam, as the stylus button does. Wait-free.
   void RequestReset() { reset_requested_.store(true, std::memory_order_release); }

@@ -11,6 +11,9 @@ class ServoClient {
  public:
   virtual ~ServoClient() = default;
   virtual void Tick(const DeviceState& state, ForceCommand& command) noexcept = 0;
+  /// Called by HapticDevice::Start() before the first tick: device time starts again at 0, so
+  /// whatever the client rendered before must not be taken for fresh.
+  virtual void OnStart() noexcept {}
 };
 
 }  // namespace cosmems

@@ -226,7 +226,7 @@ struct SceneDevice {
 };
 
 /// A scene file in typed form: SI units, the documented defaults for every optional key
-/// (see SCENES.md). LoadScene and its siblings produce only validated scenes.
+/// (see doc/scenes.md). LoadScene and its siblings produce only validated scenes.
 struct Scene {
   std::string source;  ///< the file path as given, or the embedded scene's name
   SceneStructure structure;

@@ -28,10 +28,10 @@ struct SceneOverride {
 /// Reads a scene file, applies `overrides` in order and validates the result.
 ///
 /// Throws SceneError, naming `path` (or "--set" for a key an override wrote), the dotted key and
-/// the value, for an unreadable file, invalid TOML, a missing required key, a value of the
-/// wrong type or outside its range, an unknown key or table, and for any feature that this
-/// version cannot simulate (theories other than "linear", analyses other than "static",
-/// "modal" and "transient", enabled effects other than damping, an axial load, a [device]).
+/// the value, for an unreadable file, one that is not a regular file or holds more than 1 MiB,
+/// invalid TOML, a missing required key, a value of the wrong type or outside its range (see
+/// doc/scenes.md, Limits), an unknown key or table, and for any combination that this version
+/// cannot simulate (a stretching cantilever, contact in a modal analysis, ...).
 Scene LoadSceneFile(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// As LoadSceneFile for scene text in memory; `source` names it in errors and in Scene::source.

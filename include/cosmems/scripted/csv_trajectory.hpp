@@ -1,5 +1,6 @@
 #pragma once
 
+#include <istream>
 #include <memory>
 #include <string>
 
@@ -14,7 +15,12 @@ namespace cosmems {
 ///
 /// The position is interpolated linearly between samples, held at the first sample before it
 /// and at the last one after it; Duration() is the last sample's time. Throws
-/// std::invalid_argument naming the file, the line and the offending field and value.
+/// std::invalid_argument naming the file, the line and the offending field and value; a path that
+/// is not a regular file (a FIFO, a device), a file above 1 GiB or one of more than 1e7 rows is
+/// refused the same way.
 std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path);
+
+/// The same from a stream, whose errors are named after `name`.
+std::unique_ptr<Trajectory> ReadCsvTrajectory(std::istream& in, const std::string& name);
 
 }  // namespace cosmems

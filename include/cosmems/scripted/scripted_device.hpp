@@ -19,8 +19,9 @@ namespace cosmems {
 
 /// A haptic device without hardware: a Trajectory plays the hand, a hand model turns it into
 /// stylus motion, and every tick goes through the same ServoTick() (client, safety layer) as a
-/// real device. It ticks from 0 to the trajectory's Duration() at specs.nominal_rate_hz and then
-/// stops by itself; with record on, it keeps every tick. Storage for the whole run is set up in
+/// real device. It ticks from 0 to the trajectory's Duration() at specs.nominal_rate_hz, brings
+/// the force down to zero along the slew limit (as after Stop()) and then stops by itself; with
+/// record on, it keeps every tick, the ramp's too. Storage for the whole run is set up in
 /// Start(), so the servo loop allocates nothing.
 ///
 /// Device time is tick / rate on every clock, so runs are reproducible bit for bit; the paced
@@ -33,16 +34,16 @@ class ScriptedDevice : public HapticDevice {
                           const ScriptedOptions& options = {});
   ~ScriptedDevice() override;
 
-  /// Manual clock: runs up to `n` ticks, fewer when the script ends; returns how many ran (none
-  /// before Start() or after Stop()). Throws std::logic_error on the other clocks, whose thread
+  /// Manual clock: runs up to `n` ticks, fewer when the script and the ramp after it end;
+  /// returns how many ran (none before Start() or after Stop()). Throws std::logic_error on the other clocks, whose thread
   /// owns the ticks.
   std::uint64_t Step(std::uint64_t n);
-  /// True once the last tick of the script has run.
+  /// True once the whole script has run and the force has come down to zero after it.
   bool Done() const { return done_.load(std::memory_order_acquire); }
   /// Threaded clocks: blocks until the servo thread has ended (script over, or Stop()). Returns at
   /// once on the manual clock or when no thread runs.
   void WaitUntilDone();
-  /// Ticks run since Start().
+  /// Ticks run since Start(), the ramp's included.
   std::uint64_t ticks() const { return ticks_.load(std::memory_order_acquire); }
 
   /// How the paced clock's thread got on with real-time scheduling (after Start()): what it
@@ -71,7 +72,10 @@ class ScriptedDevice : public HapticDevice {
   void Tick() noexcept;
   void RunPaced() noexcept;
   void RunFast() noexcept;
-  bool Continue() const { return !Done() && !stop_requested_.load(std::memory_order_acquire); }
+  /// The servo thread's end: the script and its ramp are over, or a stop found the force at rest.
+  bool Finished() const {
+    return Done() || (stop_requested_.load(std::memory_order_acquire) && ForceAtRest());
+  }
 
   std::unique_ptr<const Trajectory> trajectory_;
   ScriptedOptions options_;
