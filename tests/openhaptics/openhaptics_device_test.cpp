@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
+#include "cosmems/haptics/safety_layer.hpp"
+#include "extreme_values.hpp"
 #include "fake_hd_fixture.hpp"
 #include "recording_client.hpp"
 
@@ -118,6 +121,64 @@ TEST_F(OpenHapticsDeviceTest, ClientForceReachesTheDeviceInNewtons) {
   ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
   hdFakeStep(2);
   EXPECT_EQ(LoggedForce(1), (std::vector<double>{0.3, -0.2, 0.1}));
+}
+
+// The stylus jumps, every third tick, to an extreme value (test::ExtremeValues) in one
+// coordinate [mm]: the driver's velocity, a difference times the rate, overflows.
+void ExtremeMotion(HDdouble time_s, HDdouble position_mm[3], void*) {
+  static const std::vector<double> extremes = test::ExtremeValues();
+  const auto tick = static_cast<std::size_t>(std::llround(time_s * 1000.0));
+  position_mm[0] = 10.0;
+  position_mm[1] = -20.0 + time_s;
+  position_mm[2] = 5.0;
+  if (tick % 3 == 0) position_mm[tick / 3 % 3] = extremes[tick / 9 % extremes.size()];
+}
+
+/// Asks for a force of ordinary size with, every other tick, an extreme component.
+class ExtremeClient final : public ServoClient {
+ public:
+  void Tick(const DeviceState& state, ForceCommand& command) noexcept override {
+    command.force_n = Eigen::Vector3d(0.3, 0.5, -0.2);
+    if (state.tick % 2 == 0) {
+      command.force_n[static_cast<int>(state.tick / 2 % 3)] =
+          extremes_[state.tick / 6 % extremes_.size()];
+    }
+  }
+
+ private:
+  std::vector<double> extremes_ = test::ExtremeValues();
+};
+
+// The same bounds on the OpenHaptics path: extreme stylus readings and extreme forces, tick
+// after tick, never reach the motors as more than the limit, a non-finite force or a jump.
+TEST_F(OpenHapticsDeviceTest, ExtremeReadingsAndForcesStayWithinTheBounds) {
+  hdFakeSetMotion(ExtremeMotion, nullptr);
+  OpenHapticsDevice device;
+  ExtremeClient client;
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+  hdFakeStep(20000);
+  device.Stop();
+  const double limit = device.force_limit_n();
+  const double slew = SafetyLayer(SafetyOptions{}, device.specs()).slew_per_tick();
+  std::vector<double> previous(3, 0.0);
+  long breaches = 0;
+  for (HDulong tick = 0; tick < std::min<HDulong>(20000, hdFakeForceLogSize()); ++tick) {
+    const std::vector<double> f = LoggedForce(tick);
+    const Eigen::Vector3d force(f[0], f[1], f[2]);
+    const Eigen::Vector3d last(previous[0], previous[1], previous[2]);
+    if (!(force.allFinite() && force.norm() <= limit * (1.0 + 1e-12) &&
+          (force - last).norm() <= slew * (1.0 + 1e-12))) {
+      ++breaches;
+    }
+    previous = f;
+  }
+  EXPECT_EQ(breaches, 0);
+  const SafetyCounters counters = device.safety_counters();
+  EXPECT_GT(counters.out_of_range_states + counters.non_finite_states, 0);
+  EXPECT_GT(counters.clamped, 0);
+  EXPECT_EQ(counters.output_guards, 0);
+  EXPECT_GT(counters.max_force_n, 0.0);  // between the faults, forces were rendered
 }
 
 TEST_F(OpenHapticsDeviceTest, SafetyLayerHoldsTheForceUnderItsLimit) {
