@@ -28,7 +28,7 @@ struct HapticResults {
   double position_scale = 0.0, force_scale = 0.0;
   double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
   std::string realtime_note;
-  std::string device_model;                                ///< from the device's specs
+  std::string device_model;                ///< from the device's specs
   std::vector<std::string> bounded_specs;  ///< specs the device reported beyond the table
   CalibrationStatus calibration = CalibrationStatus::kOk;  ///< when the loop started
   std::string hd_library;  ///< OpenHaptics: "sdk" or "fake"; empty for the scripted stylus

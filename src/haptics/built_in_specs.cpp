@@ -62,11 +62,12 @@ void CompleteSpecs(DeviceSpecs& reported) {
   bound(reported.max_damping_ns_per_m, table.max_damping_ns_per_m, "max_damping_ns_per_m");
   fill(reported.position_resolution_m, table.position_resolution_m);
   fill(reported.nominal_rate_hz, table.nominal_rate_hz);
-  const bool box_reported = !(reported.workspace_min_m.isZero() && reported.workspace_max_m.isZero());
-  if (box_reported && !(reported.workspace_min_m.allFinite() && reported.workspace_max_m.allFinite())) {
-    reported.bounded_fields.emplace_back("workspace");
-  }
-  if (!box_reported || !(reported.workspace_min_m.allFinite() && reported.workspace_max_m.allFinite())) {
+  const bool box_reported =
+      !(reported.workspace_min_m.isZero() && reported.workspace_max_m.isZero());
+  const bool box_finite =
+      reported.workspace_min_m.allFinite() && reported.workspace_max_m.allFinite();
+  if (box_reported && !box_finite) reported.bounded_fields.emplace_back("workspace");
+  if (!box_reported || !box_finite) {
     reported.workspace_min_m = table.workspace_min_m;
     reported.workspace_max_m = table.workspace_max_m;
   }

@@ -79,8 +79,8 @@ Eigen::Vector3d HapticDevice::ServoTick(const DeviceState& state) noexcept {
   return force;
 }
 
-Eigen::Vector3d HapticDevice::ServoRampDown(bool& at_rest) noexcept {
-  at_rest = safety_->RampDown();
+Eigen::Vector3d HapticDevice::ServoRampDown() noexcept {
+  safety_->RampDown();
   return safety_->last_output();
 }
 

@@ -100,9 +100,9 @@ struct OpenHapticsDevice::Session {
 
   // Shared.
   std::atomic<HDenum> calibration{HD_CALIBRATION_OK};
-  std::atomic<bool> ended{false};     // a scheduler error ended the callback
-  std::atomic<bool> stopping{false};  // StopServo() asks the ticks to ramp the force down
-  std::atomic<bool> ramped{false};    // the force is zero and its output off; the callback ended
+  std::atomic<bool> ended{false};       // a scheduler error ended the callback
+  std::atomic<bool> stopping{false};    // StopServo() asks the ticks to ramp the force down
+  std::atomic<bool> ramped{false};      // the force is zero and its output off; the callback ended
   std::atomic<std::uint64_t> error{0};  // errorCode << 32 | internalErrorCode, in one piece
 
   void Record(const HDErrorInfo& e) {
@@ -150,13 +150,12 @@ HDCallbackCode OpenHapticsDevice::Session::Tick(OpenHapticsDevice& owner) noexce
     calibration.store(Calibrate(calibration_styles), std::memory_order_relaxed);
   }
 
-  bool at_rest = false;
   const bool stop = stopping.load(std::memory_order_acquire);
-  const Eigen::Vector3d force_n = stop ? owner.ServoRampDown(at_rest) : owner.ServoTick(state);
+  const Eigen::Vector3d force_n = stop ? owner.ServoRampDown() : owner.ServoTick(state);
   hdSetDoublev(HD_CURRENT_FORCE, force_n.data());
   hdEndFrame(device);
   ++tick;
-  if (at_rest) {
+  if (stop && owner.ForceAtRest()) {
     // The zero force is latched: the motors go off before the scheduler stops.
     hdDisable(HD_FORCE_OUTPUT);
     Triage();
@@ -316,8 +315,8 @@ void OpenHapticsDevice::StopServo() noexcept {
   Session& s = *session_;
   s.stopping.store(true, std::memory_order_release);
   const double ramp_s = static_cast<double>(MaxRampDownTicks() + 1) / s.rate_hz;
-  const auto deadline = std::chrono::steady_clock::now() +
-                        std::chrono::duration<double>(4.0 * ramp_s + 0.1);
+  const auto deadline =
+      std::chrono::steady_clock::now() + std::chrono::duration<double>(4.0 * ramp_s + 0.1);
   while (!s.ramped.load(std::memory_order_acquire) && !s.ended.load() &&
          std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(1));

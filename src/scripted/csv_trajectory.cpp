@@ -159,8 +159,8 @@ std::unique_ptr<Trajectory> LoadCsvTrajectory(const std::string& path) {
   }
   const std::uintmax_t bytes = std::filesystem::file_size(path, error);
   if (error || bytes > kMaxFileBytes) {
-    errors.Throw(0, "the trajectory file is larger than " + std::to_string(kMaxFileBytes) +
-                        " bytes");
+    errors.Throw(0,
+                 "the trajectory file is larger than " + std::to_string(kMaxFileBytes) + " bytes");
   }
   std::ifstream file(path);
   if (!file) errors.Throw(0, "cannot open the trajectory file");

@@ -46,10 +46,10 @@ ScriptedDevice::ScriptedDevice(std::unique_ptr<const Trajectory> trajectory,
   CompleteSpecs(specs);
   const std::uint64_t ticks = TicksOver(trajectory_->Duration(), specs.nominal_rate_hz);
   if (options_.record && ticks > kMaxRecordedTicks) {
-    throw std::invalid_argument("scripted device: trajectory Duration() = " +
-                                std::to_string(trajectory_->Duration()) + " s is " +
-                                std::to_string(ticks) + " ticks; a recorded run takes at most " +
-                                std::to_string(kMaxRecordedTicks));
+    throw std::invalid_argument(
+        "scripted device: trajectory Duration() = " + std::to_string(trajectory_->Duration()) +
+        " s is " + std::to_string(ticks) + " ticks; a recorded run takes at most " +
+        std::to_string(kMaxRecordedTicks));
   }
   realtime_note_ = options_.clock == ScriptedClock::kPaced
                        ? "not started"
@@ -186,8 +186,7 @@ void ScriptedDevice::Tick() noexcept {
   state.position_m = spring ? hand_.position() : target;
   state.velocity_m_s = spring ? hand_.velocity() : target_velocity;
 
-  bool at_rest = false;  // ForceAtRest() says it after the tick
-  const Eigen::Vector3d force = ramp ? ServoRampDown(at_rest) : ServoTick(state);
+  const Eigen::Vector3d force = ramp ? ServoRampDown() : ServoTick(state);
   if (spring) hand_.Step(target, target_velocity, force);
   if (n < samples_.size()) {
     samples_[n] = ScriptedSample{t, state.position_m, state.velocity_m_s, force};

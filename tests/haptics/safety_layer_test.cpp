@@ -220,8 +220,7 @@ TEST(SafetyLayerTest, TheObserverBooksOnlyTheForceDelivered) {
   EXPECT_GT(layer.counters().passivity_activations, 0);
   // What the first tick really banked: the clamped, slewed force over that tick.
   const double banked = layer.slew_per_tick() * 0.05 * layer.period();
-  EXPECT_LE(energy_to_hand,
-            banked + specs.max_damping_ns_per_m * 0.05 * 0.05 * layer.period());
+  EXPECT_LE(energy_to_hand, banked + specs.max_damping_ns_per_m * 0.05 * 0.05 * layer.period());
 }
 
 // A model that claims to come from the future (negative age: a device clock that started again)

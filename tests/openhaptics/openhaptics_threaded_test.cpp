@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <string>
-#include <vector>
 #include <thread>
+#include <vector>
 
 #include "cosmems/openhaptics/openhaptics_device.hpp"
 #include "fake_hd_fixture.hpp"

@@ -233,8 +233,7 @@ void ExpectRampFrom(const std::vector<ScriptedSample>& samples, std::size_t from
   }
   EXPECT_EQ(samples.back().force_n.norm(), 0.0);
   EXPECT_EQ(samples.size() - from, 8u);  // 0.8 N at 0.1 N a tick
-  EXPECT_EQ(device.safety_counters().ramp_down_ticks,
-            static_cast<long>(samples.size() - from));
+  EXPECT_EQ(device.safety_counters().ramp_down_ticks, static_cast<long>(samples.size() - from));
 }
 
 // Stopping the loop, or reaching the script's end, does not drop the force from where it is:

@@ -12,8 +12,8 @@
 #include "cosmems/haptics/safety_layer.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
-#include "table_trajectory.hpp"
 #include "extreme_values.hpp"
+#include "table_trajectory.hpp"
 #include "test_clients.hpp"
 
 namespace cosmems {
@@ -121,12 +121,9 @@ struct Script {
 };
 
 std::vector<Script> Scripts() {
-  return {{"jumps", Jumps()},
-          {"gaps", Gaps()},
-          {"stalls", Stalls()},
-          {"random 1", RandomMess(1)},
-          {"random 2", RandomMess(2)},
-          {"extremes", Extremes()}};
+  return {{"jumps", Jumps()},          {"gaps", Gaps()},
+          {"stalls", Stalls()},        {"random 1", RandomMess(1)},
+          {"random 2", RandomMess(2)}, {"extremes", Extremes()}};
 }
 
 /// The default safety settings, and a looser set: full peak force, ten times the slew rate, no

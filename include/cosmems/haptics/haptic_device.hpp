@@ -71,9 +71,9 @@ class HapticDevice {
   /// returns what to send [N, device frame]: finite, within the limit and the slew rate.
   /// Allocation-free and noexcept; call it only between StartServo() and StopServo().
   Eigen::Vector3d ServoTick(const DeviceState& state) noexcept;
-  /// One tick of a stop (the client is not asked): the force to send, one slew step nearer zero;
-  /// `at_rest` is true once it is zero. Allocation-free and noexcept.
-  Eigen::Vector3d ServoRampDown(bool& at_rest) noexcept;
+  /// One tick of a stop (the client is not asked): the force to send, one slew step nearer zero
+  /// (ForceAtRest() once it is zero). Allocation-free and noexcept.
+  Eigen::Vector3d ServoRampDown() noexcept;
   /// True when the last force sent was zero (on the servo thread, or while no tick runs).
   bool ForceAtRest() const { return safety_->last_output().isZero(0.0); }
 

@@ -15,9 +15,9 @@ namespace cosmems {
 struct SafetyOptions {
   double force_limit_n = 0.0;         ///< 0: the device's continuous force (motors stay cool)
   double slew_limit_n_per_s = 100.0;  ///< largest change of force: 0.1 N a tick at 1 kHz; 1 to 1e6
-  double ramp_in_s = 0.5;        ///< force scale 0 -> 1 after start and after every fault; <= 60
+  double ramp_in_s = 0.5;         ///< force scale 0 -> 1 after start and after every fault; <= 60
   double max_model_age_s = 0.01;  ///< an older force (stale physics) is replaced by zero; <= 1
-  bool passivity_control = true;      ///< Hannaford & Ryu's observer and variable damper
+  bool passivity_control = true;  ///< Hannaford & Ryu's observer and variable damper
 
   /// Throws std::invalid_argument naming the field and its value.
   void Validate() const {
@@ -146,7 +146,8 @@ class SafetyLayer {
     }
     Eigen::Vector3d target = Clamped(force);
     if (ramp_ < 1.0) {
-      ramp_ = options_.ramp_in_s > 0.0 ? std::min(1.0, ramp_ + period_s_ / options_.ramp_in_s) : 1.0;
+      ramp_ =
+          options_.ramp_in_s > 0.0 ? std::min(1.0, ramp_ + period_s_ / options_.ramp_in_s) : 1.0;
       ++counters_.ramp_ticks;
       target *= ramp_;
     }

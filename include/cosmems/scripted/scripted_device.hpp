@@ -35,8 +35,8 @@ class ScriptedDevice : public HapticDevice {
   ~ScriptedDevice() override;
 
   /// Manual clock: runs up to `n` ticks, fewer when the script and the ramp after it end;
-  /// returns how many ran (none before Start() or after Stop()). Throws std::logic_error on the other clocks, whose thread
-  /// owns the ticks.
+  /// returns how many ran (none before Start() or after Stop()). Throws std::logic_error on the
+  /// other clocks, whose thread owns the ticks.
   std::uint64_t Step(std::uint64_t n);
   /// True once the whole script has run and the force has come down to zero after it.
   bool Done() const { return done_.load(std::memory_order_acquire); }
