@@ -283,37 +283,45 @@ void RegisterBridge() {
 // The pull-in voltage over a 2 um gap, the electrode under the whole beam and no fringing field,
 // against the shooting solution of the pull-in tests (surface/beam_shooting.hpp): the cantilever,
 // and the bridge with mid-plane stretching (without it a bridge pulls in some 6 % lower, which its
-// linear rows show). Timed: SolvePullIn from rest.
-double PullInVoltage(bool bridge) {
-  static std::map<bool, double> cache;
-  auto it = cache.find(bridge);
-  if (it == cache.end()) {
-    const double kappa = bridge ? ReferenceEa() * kGap * kGap / (2.0 * ReferenceEi()) : 0.0;
-    const double beta = test::BeamShooting(bridge, 2, 0.0, kappa).Fold().second;
-    const double width = test::ReferenceSection().width;
-    const double voltage = std::sqrt(2.0 * beta * ReferenceEi() * kGap * kGap * kGap /
-                                     (kVacuumPermittivity * width * std::pow(kLength, 4)));
-    it = cache.emplace(bridge, voltage).first;
-  }
-  return it->second;
-}
-
+// linear rows show); and the strongly stretched bridge, 100 um long over a 4 um gap (twice its
+// thickness), whose tension draws the bending into boundary layers at the clamps. Timed:
+// SolvePullIn from rest.
 struct PullInSetting {
   bool bridge = false;
   bool stretching = false;
   int elements = 20;
   int order = 1;
   double slope_tolerance = FoldOptions{}.slope_tolerance;
+  double length = kLength;
+  double gap = kGap;
 };
+
+double PullInVoltage(const PullInSetting& setting) {
+  static std::map<std::array<double, 3>, double> cache;
+  const std::array<double, 3> key = {setting.bridge ? 1.0 : 0.0, setting.length, setting.gap};
+  auto it = cache.find(key);
+  if (it == cache.end()) {
+    const double g = setting.gap;
+    const double kappa = setting.bridge ? ReferenceEa() * g * g / (2.0 * ReferenceEi()) : 0.0;
+    const double beta = test::BeamShooting(setting.bridge, 2, 0.0, kappa).Fold().second;
+    const double width = test::ReferenceSection().width;
+    const double voltage = std::sqrt(2.0 * beta * ReferenceEi() * g * g * g /
+                                     (kVacuumPermittivity * width * std::pow(setting.length, 4)));
+    it = cache.emplace(key, voltage).first;
+  }
+  return it->second;
+}
 
 void MeasurePullIn(benchmark::State& state, const PullInSetting& setting) {
   const StructureKind kind = setting.bridge ? StructureKind::kBridge : StructureKind::kCantilever;
-  const BeamModel<2> model(bench::ReferenceBeam(kind, setting.elements, setting.order));
+  const BeamModel<2> model(MakeStructure(kind, setting.length, test::Silicon(),
+                                         test::ReferenceSection(), setting.elements,
+                                         setting.order));
   std::optional<StretchingForce<2>> stretching;
   if (setting.stretching) stretching.emplace(model);
   PullInOptions options;
-  options.electrode = {kGap, 0.0, kLength};
-  options.control_x = setting.bridge ? kLength / 2 : kLength;
+  options.electrode = {setting.gap, 0.0, setting.length};
+  options.control_x = setting.bridge ? setting.length / 2 : setting.length;
   options.fold.slope_tolerance = setting.slope_tolerance;
   PullInResult result;
   for (auto _ : state) result = SolvePullIn(model, options, stretching ? &*stretching : nullptr);
@@ -321,7 +329,7 @@ void MeasurePullIn(benchmark::State& state, const PullInSetting& setting) {
     state.SkipWithError("pull-in failed");
     return;
   }
-  state.counters["rel_error"] = std::abs(result.voltage_v / PullInVoltage(setting.bridge) - 1.0);
+  state.counters["rel_error"] = std::abs(result.voltage_v / PullInVoltage(setting) - 1.0);
 }
 
 void RegisterPullIn(const std::string& problem, const PullInSetting& setting) {
@@ -346,6 +354,10 @@ void RegisterPullIns() {
     RegisterPullIn("pullin_bridge", {true, true, elements, 1});
   }
   RegisterPullIn("pullin_bridge", {true, false, 40, 1});
+  for (int elements : {10, 20, 40, 80}) {
+    RegisterPullIn("pullin_bridge_stretched",
+                   {true, true, elements, 1, FoldOptions{}.slope_tolerance, 100e-6, 4e-6});
+  }
 }
 
 // --- The release transient --------------------------------------------------------------------
@@ -573,6 +585,10 @@ std::vector<bench::ProblemInfo> Problems() {
        "pull-in voltage against a shooting solution of the beam equation", "one pull-in analysis"},
       {"pullin_bridge", "pull-in of the reference bridge over a 2 um gap, stretching",
        "pull-in voltage against a shooting solution with mid-plane stretching",
+       "one pull-in analysis"},
+      {"pullin_bridge_stretched",
+       "pull-in of a 100 um bridge over a 4 um gap (twice its thickness), stretching",
+       "pull-in voltage against a multiple-shooting solution with mid-plane stretching",
        "one pull-in analysis"},
       {"release", "reference cantilever released from a static tip deflection, undamped",
        "largest tip error over the first 1 ms against the exact modal series, relative to the "

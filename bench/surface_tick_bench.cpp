@@ -30,13 +30,14 @@ constexpr double kGap = 2e-6;
 constexpr int kCycle = 500;
 
 // The hand's tip force at tick i [N]: down to 3 times the force that closes the gap, hold, then
-// up to 3 times that force the other way, which peels the tip off.
+// up to 5 times that force the other way, which peels the tip off (it lets go near 3, where its
+// energy release rate reaches the work of adhesion).
 double HandForce(long tick) {
   const double closing = 0.845 * kGap;  // tip stiffness 3EI/L^3 times the gap
   const double s = static_cast<double>(tick % kCycle) / kCycle;
   if (s < 0.3) return -3.0 * closing * s / 0.3;
   if (s < 0.5) return -3.0 * closing;
-  if (s < 0.8) return -3.0 * closing + 6.0 * closing * (s - 0.5) / 0.3;
+  if (s < 0.8) return -3.0 * closing + 8.0 * closing * (s - 0.5) / 0.3;
   return 0.0;
 }
 

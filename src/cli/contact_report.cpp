@@ -5,11 +5,9 @@
 namespace cosmems::internal {
 
 nlohmann::ordered_json ContactJson(const ContactSummary& contact) {
-  return {{"in_contact", contact.InContact()},
-          {"stuck", contact.Stuck()},
-          {"contact_length_m", contact.contact_length_m},
-          {"state", ToString(contact.state)},
-          {"detached_length_m", contact.detached_length_m}};
+  return {{"in_contact", contact.InContact()}, {"stuck", contact.Stuck()},
+          {"shape", ToString(contact.shape)},  {"contact_length_m", contact.contact_length_m},
+          {"state", ToString(contact.state)},  {"detached_length_m", contact.detached_length_m}};
 }
 
 nlohmann::ordered_json ContactEventsJson(const ContactEvents& events) {
@@ -20,7 +18,9 @@ nlohmann::ordered_json ContactEventsJson(const ContactEvents& events) {
 }
 
 void PrintContact(std::ostream& out, const ContactSummary& contact) {
-  out << "substrate             " << ToString(contact.state) << "\n";
+  out << "substrate             " << ToString(contact.state);
+  if (contact.Stuck()) out << " (" << Describe(contact.shape) << ")";
+  out << "\n";
   out << "contact length        " << Scientific(contact.contact_length_m) << " m\n";
   out << "detached length       " << Scientific(contact.detached_length_m)
       << " m (free span from the first support)\n";

@@ -8,7 +8,8 @@
 namespace cosmems::internal {
 
 /// The beam against the substrate as every analysis with contact reports it: doc/cli.md's
-/// {in_contact, stuck, contact_length_m}, and the extensions state and detached_length_m.
+/// {in_contact, stuck, contact_length_m}, and the extensions shape, state and
+/// detached_length_m.
 nlohmann::ordered_json ContactJson(const ContactSummary& contact);
 
 /// {proximity_warnings, contacts, stuck_events, releases}.

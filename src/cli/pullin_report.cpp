@@ -34,6 +34,7 @@ std::unique_ptr<PullInReport> RunPullIn(const Scene& scene) {
     results.voltage_v = result.voltage_v;
     results.displacement_m = result.displacement_m;
     results.travel_m = result.travel_m;
+    results.instability = result.instability;
     results.shape = WithNodePositions(model.NodeX(), model.units().length,
                                       BeamField<Dim>(model, result.displacement).AtNodes());
   } else if (scene.analysis.voltage_max && result.status == Status::kNotConverged) {
@@ -53,6 +54,7 @@ void PullInReport::AddResults(nlohmann::ordered_json& json) const {
   json["pullin_voltage_v"] = results_.voltage_v;
   json["pullin_displacement_m"] = results_.displacement_m;
   json["pullin_travel_m"] = results_.travel_m;
+  json["pullin_instability"] = ToString(results_.instability);
   json["solves"] = results_.solves;
   json["newton_iterations"] = results_.iterations;
 }
@@ -61,6 +63,11 @@ void PullInReport::PrintResults(std::ostream& out) const {
   out << "pull-in voltage       " << Significant(results_.voltage_v, 6) << " V\n";
   out << "travel at pull-in     " << Scientific(results_.travel_m) << " m ("
       << Significant(results_.travel_m / results_.gap_m, 4) << " of the gap)\n";
+  out << "instability           "
+      << (results_.instability == Instability::kLimitPoint
+              ? "limit point (the voltage's largest value along the path)"
+              : "bifurcation (the path's matrix turns singular while the voltage still rises)")
+      << "\n";
   out << "last stable state     " << Scientific(results_.displacement_m)
       << " m largest deflection\n";
   out << "solves                " << results_.solves << " (" << results_.iterations

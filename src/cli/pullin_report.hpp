@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "analysis_report.hpp"
+#include "cosmems/analysis/fold_search.hpp"
 #include "cosmems/scene/scene.hpp"
 
 namespace cosmems::internal {
@@ -14,6 +15,7 @@ struct PullInResults {
   double displacement_m = 0.0;  ///< largest deflection of the last stable state
   double travel_m = 0.0;        ///< deflection at the tip (midspan) at pull-in
   double gap_m = 0.0;
+  Instability instability = Instability::kLimitPoint;  ///< how the stable path ended
   int solves = 0;
   int iterations = 0;
   Eigen::MatrixXd shape;  ///< the last stable state: one row per node, x (m), ux ... rz

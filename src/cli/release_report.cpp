@@ -48,13 +48,14 @@ std::unique_ptr<ReleaseReport> ReleaseReport::Run(const Scene& scene) {
 void ReleaseReport::AddResults(nlohmann::ordered_json& json) const {
   const ContactSummary& c = results_.contact;
   json["stuck"] = c.Stuck();
+  json["shape"] = ToString(c.shape);
   json["detached_length_m"] = c.detached_length_m;
   json["contact_length_m"] = c.contact_length_m;
   json["contact"] = ContactJson(c);
 }
 
 void ReleaseReport::PrintResults(std::ostream& out) const {
-  out << "after release         " << (results_.contact.Stuck() ? "stuck" : "free") << "\n";
+  out << "after release         " << Describe(results_.contact.shape) << "\n";
   PrintContact(out, results_.contact);
 }
 

@@ -28,7 +28,7 @@ void DrawSurfaceWarning(const ContactSummary& contact, const Viewport& viewport)
       ImGui::TextUnformatted("Warning: the beam touches the substrate");
       break;
     case ContactState::kStuck:
-      ImGui::TextUnformatted("Failure: the beam is stuck to the substrate");
+      ImGui::Text("Failure: the beam is stuck to the substrate, %s", Describe(contact.shape));
       ImGui::TextUnformatted("Press Reset Failure (or the stylus's second button) to free it");
       break;
     case ContactState::kFree:

@@ -93,7 +93,8 @@ void Panel::DrawState(const PanelStatus& status, PanelActions& actions) const {
   if (stuck) ImGui::PopStyleColor(2);
   ImGui::SameLine();
   if (stuck) {
-    ImGui::TextColored(StateColour(state), "STUCK to the substrate");
+    ImGui::TextColored(StateColour(state), "STUCK, %s",
+                       status.frame->contact.shape == StuckShape::kArc ? "arc-shaped" : "S-shaped");
   } else {
     ImGui::TextColored(StateColour(state), "beam %s", ToString(state));
   }

@@ -23,9 +23,10 @@ void PrintFigures(const ViewerFigures& f, std::ostream& out) {
   out << "physics      " << p.ticks << " ticks, median " << p.ComputeQuantileUs(0.5) << " us, p99 "
       << p.ComputeQuantileUs(0.99) << " us, max " << p.compute_max_us << " us, "
       << f.failed_physics_ticks << " failed\n";
-  out << "beam         " << ToString(f.contact.state) << "; " << f.events.proximity_warnings
-      << " proximity warnings, " << f.events.contacts << " contacts, " << f.events.stuck
-      << " stuck, " << f.events.releases << " releases\n";
+  out << "beam         " << ToString(f.contact.state);
+  if (f.contact.Stuck()) out << " (" << Describe(f.contact.shape) << ")";
+  out << "; " << f.events.proximity_warnings << " proximity warnings, " << f.events.contacts
+      << " contacts, " << f.events.stuck << " stuck, " << f.events.releases << " releases\n";
   if (!f.realtime_note.empty()) out << "real-time    " << f.realtime_note << "\n";
   if (!f.screenshot.empty()) out << "screenshot   " << f.screenshot << "\n";
 }
@@ -50,6 +51,7 @@ void PrintFiguresJson(const ViewerFigures& f, std::ostream& out) {
                      {"failed_ticks", f.failed_physics_ticks},
                      {"tick_time_us", internal::TimesJson(f.physics)}};
   json["contact_state"] = ToString(f.contact.state);
+  json["contact_shape"] = ToString(f.contact.shape);
   json["contact_events"] = internal::ContactEventsJson(f.events);
   json["realtime_note"] = f.realtime_note;
   json["screenshot"] = f.screenshot;

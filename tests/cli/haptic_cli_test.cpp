@@ -58,6 +58,23 @@ TEST(HapticCliTest, TheSpatialBeamIsPressedOntoTheSubstrateToo) {
             json.at("force_limit_n").get<double>() * (1 + 1e-12));
 }
 
+// The press sticks the tip; when the stylus lifts, a cantilever longer than the arc-shaped
+// detachment length (100 um here, with the scene's 20 nm asperities) stays held by its tip,
+// arc-shaped, and a shorter one springs free.
+TEST(HapticCliTest, AfterThePressTheTipStaysStuckArcShapedOrSpringsFree) {
+  const nlohmann::json arc =
+      RunJson(Args({"cantilever-haptic", "--set", "structure.length=120e-6"}));
+  EXPECT_EQ(arc.at("status"), "ok");
+  EXPECT_EQ(arc.at("contact").at("state"), "stuck");
+  EXPECT_EQ(arc.at("contact").at("shape"), "arc");
+  EXPECT_EQ(arc.at("contact_events").at("releases").get<long>(), 0);
+  const nlohmann::json free =
+      RunJson(Args({"cantilever-haptic", "--set", "structure.length=90e-6"}));
+  EXPECT_EQ(free.at("contact").at("shape"), "free");
+  EXPECT_GE(free.at("contact_events").at("stuck_events").get<long>(), 1);
+  EXPECT_EQ(free.at("contact_events").at("releases").get<long>(), 1);
+}
+
 // The OpenHaptics backend from the command line: without the SDK, the project's fake Omni, whose
 // stylus rests at the workspace's centre, a tenth of the clearance into the beam's upper face.
 TEST(HapticCliTest, TheOpenHapticsBackendRunsTheSceneForItsDuration) {

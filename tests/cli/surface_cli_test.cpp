@@ -1,7 +1,7 @@
 // Contact, stiction and the surface pressures through the CLI: the release analysis against the
-// S-shaped stuck cantilever's closed form, statics that rest on the substrate or collapse onto
-// it, a transient touchdown with its events, and the validation of the effects' keys. The
-// models' accuracy against independent solutions is held by tests/surface.
+// S-shaped and arc-shaped stuck cantilevers' closed forms, statics that rest on the substrate or
+// collapse onto it, a transient touchdown with its events, and the validation of the effects' keys.
+// The models' accuracy against independent solutions is held by tests/surface.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -34,6 +34,7 @@ TEST(SurfaceCliTest, StictionSceneStaysStuckWithTheFreeSpanOfTheEnergyBalance) {
   EXPECT_EQ(json.at("status"), "ok");
   EXPECT_EQ(json.at("analysis"), "release");
   EXPECT_TRUE(json.at("stuck").get<bool>());
+  EXPECT_EQ(json.at("shape"), "s");
   const double detached = json.at("detached_length_m").get<double>();
   EXPECT_NEAR(detached, span, 2.0 * scene.structure.length / scene.model.elements);
   EXPECT_NEAR(json.at("contact_length_m").get<double>(), scene.structure.length - detached, 1e-12);
@@ -41,12 +42,21 @@ TEST(SurfaceCliTest, StictionSceneStaysStuckWithTheFreeSpanOfTheEnergyBalance) {
   EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
 }
 
-TEST(SurfaceCliTest, ShortCantileverSpringsFree) {
-  const nlohmann::json json = RunJson({"cantilever-stiction", "--set", "structure.length=120e-6"});
-  EXPECT_EQ(json.at("status"), "ok");
-  EXPECT_FALSE(json.at("stuck").get<bool>());
-  EXPECT_EQ(json.at("contact_length_m").get<double>(), 0.0);
-  EXPECT_NEAR(json.at("detached_length_m").get<double>(), 120e-6, 1e-15);
+// Shorter than the S shape's span the beam holds by its tip alone (arc-shaped) down to
+// (3 E t^3 g^2 / (8 Gamma))^(1/4) = 100.4 um, and springs free below it.
+TEST(SurfaceCliTest, ShorterCantileversStickByTheirTipOrSpringFree) {
+  const nlohmann::json arc = RunJson({"cantilever-stiction", "--set", "structure.length=120e-6"});
+  EXPECT_EQ(arc.at("status"), "ok");
+  EXPECT_TRUE(arc.at("stuck").get<bool>());
+  EXPECT_EQ(arc.at("shape"), "arc");
+  EXPECT_EQ(arc.at("contact").at("shape"), "arc");
+  EXPECT_EQ(arc.at("contact_length_m").get<double>(), 0.0);
+  EXPECT_NEAR(arc.at("detached_length_m").get<double>(), 120e-6, 1e-15);
+  const nlohmann::json free = RunJson({"cantilever-stiction", "--set", "structure.length=95e-6"});
+  EXPECT_EQ(free.at("status"), "ok");
+  EXPECT_FALSE(free.at("stuck").get<bool>());
+  EXPECT_EQ(free.at("shape"), "free");
+  EXPECT_NEAR(free.at("detached_length_m").get<double>(), 95e-6, 1e-15);
 }
 
 TEST(SurfaceCliTest, ReleaseWritesTheShapeOnTheSubstrate) {

@@ -64,18 +64,16 @@ std::vector<Eigen::Vector3d> Points(Script script) {
 struct StylusCase {
   Script script;
   int substeps;  ///< physics steps a 1 ms tick
-  /// Ticks whose physics fails, measured. After a stall the stylus snaps 12 mm (2.3 um of probe)
-  /// into the beam: Newton's iterates cross the substrate, where the Casimir pressure is not
-  /// defined, and are pulled back along their increment, so every tick runs (before that pull-back
-  /// 348 ticks were refused). In single 1 ms steps the jumps' presses still fail 5 ticks
-  /// (kNonFinite: a jump drives the probe 2 um into the beam at once, and Newton's iterates stay
-  /// across the substrate through 10 halvings of their increment).
-  bool fails;
-  /// Whether the physics runs again by the end of the script (it does in every case since Newton
-  /// solves an indefinite step with a raised mass term; before, a tip stuck in single 1 ms steps
-  /// was never peeled off and 1180 of 2001 ticks were refused).
-  bool recovers;
 };
+
+// Every tick's physics runs, in every case. After a stall the stylus snaps 12 mm (2.3 um of
+// probe) into the beam: Newton's iterates cross the substrate, where the Casimir pressure is not
+// defined, and are pulled back along their increment (before that pull-back 348 ticks were
+// refused). Newton solves an indefinite step with a raised mass term (before, a tip stuck in
+// single 1 ms steps was never peeled off and 1180 of 2001 ticks were refused). In single 1 ms
+// steps the jumps' presses failed 5 ticks while the tip came free between them (a jump drove the
+// probe 2 um into the free beam at once); held by its tip since the first press, the beam now
+// takes every jump.
 
 std::string StylusName(const ::testing::TestParamInfo<StylusCase>& info) {
   const char* names[] = {"Press", "Jumps10mm", "NaN", "Stalls"};
@@ -90,7 +88,7 @@ class StylusTest : public ::testing::TestWithParam<StylusCase> {};
 constexpr double kRounding = 1e-12;
 
 TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
-  const auto [script, substeps, fails, recovers] = GetParam();
+  const auto [script, substeps] = GetParam();
   HapticPhysicsOptions physics;
   physics.substeps = substeps;
   test::ReferenceTouch touch(physics);
@@ -117,7 +115,7 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   }
   device.Stop();
   EXPECT_EQ(static_cast<long>(loop.failed_ticks()), failed);
-  EXPECT_EQ(frame.status == Status::kOk, recovers);
+  EXPECT_EQ(frame.status, Status::kOk);
 
   const double limit = device.force_limit_n();
   const double slew = SafetyLayer(scripted.safety, device.specs()).slew_per_tick();
@@ -136,20 +134,13 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   EXPECT_EQ(counters.non_finite_states, nan_ticks);
   // A failed tick leaves the local model invalid, which the safety layer takes as a stale force.
   EXPECT_EQ(counters.stale_forces, failed);
-  if (fails) {
-    EXPECT_GT(failed, 0);
-  } else {
-    EXPECT_EQ(failed, 0);
-  }
-  // Every press sticks the tip and every lift frees it; a jump along the beam's axis or up carries
-  // the probe off a stuck tip, which comes free and sticks again when the stylus jumps back (7 of
-  // each measured with the jumps).
-  EXPECT_EQ(frame.events.releases, frame.events.stuck);
-  if (script == Script::kJumps) {
-    EXPECT_GE(frame.events.stuck, 2);
-  } else {
-    EXPECT_EQ(frame.events.stuck, 2);
-  }
+  EXPECT_EQ(failed, 0);
+  // The first press sticks the tip, and the stylus cannot pull: when it lifts or jumps off, the
+  // 200 um beam, longer than its arc-shaped detachment length (100 um), stays held by its tip
+  // (doc/surface.md), through every later press, until a reset.
+  EXPECT_EQ(frame.events.stuck, 1);
+  EXPECT_EQ(frame.events.releases, 0);
+  EXPECT_TRUE(frame.contact.Stuck());
   test::RecordFigure("failed_ticks", failed);
   test::RecordFigure("failed_ticks_non_finite", non_finite_status);
   test::RecordFigure("clamped", counters.clamped);
@@ -158,14 +149,12 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   test::RecordFigure("releases", frame.events.releases);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scripts, StylusTest,
-                         ::testing::Values(StylusCase{Script::kPress, 10, false, true},
-                                           StylusCase{Script::kJumps, 10, false, true},
-                                           StylusCase{Script::kNaN, 10, false, true},
-                                           StylusCase{Script::kStalls, 10, false, true},
-                                           StylusCase{Script::kPress, 1, false, true},
-                                           StylusCase{Script::kJumps, 1, true, true}),
-                         StylusName);
+INSTANTIATE_TEST_SUITE_P(
+    Scripts, StylusTest,
+    ::testing::Values(StylusCase{Script::kPress, 10}, StylusCase{Script::kJumps, 10},
+                      StylusCase{Script::kNaN, 10}, StylusCase{Script::kStalls, 10},
+                      StylusCase{Script::kPress, 1}, StylusCase{Script::kJumps, 1}),
+    StylusName);
 
 // A NaN probe position handed to the physics directly (HapticLoop never hands it one: the device
 // shows its client no state it got wrong): the probe's faces come out NaN, the tick is refused as

@@ -1,6 +1,7 @@
 // Contact with the substrate and stiction, against closed forms: the propped cantilever, the
-// S-shaped stuck cantilever of the energy-release-rate balance Gamma = 3 E t^3 g^2 / (2 s^4), and
-// the energy of an impact.
+// S-shaped stuck cantilever of the energy-release-rate balance Gamma = 3 E t^3 g^2 / (2 s^4), the
+// arc-shaped one held by its tip (G = 3 E t^3 g^2 / (8 L^4), de Boer & Michalske), the map of
+// stuck shapes against length, and the energy of an impact.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <vector>
 
+#include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
@@ -207,14 +209,27 @@ double StuckSpan(double gamma, double height) {
                   0.25);
 }
 
-ContactSummary Release(const BeamModel<2>& model, double gamma) {
+// The arc-shaped detachment length: a cantilever stuck by its tip alone is the tip-loaded one
+// whose tip is held at -g, U = 3 EI g^2 / (2 L^3), and G = -dU/dL / b = 3 E t^3 g^2 / (8 L^4)
+// balances Gamma at L^4 = 3 E t^3 g^2 / (8 Gamma).
+double ArcLength(double gamma, double height) { return StuckSpan(gamma, height) / std::sqrt(2.0); }
+
+ContactOptions StictionOptions(double gamma) {
   ContactOptions options;
   options.gap = kReferenceGap;
   options.stiction = true;
   options.adhesion_energy = gamma;
-  SubstrateContact<2> contact(model, options);
+  return options;
+}
+
+// The release analysis (as the CLI's): every node stuck, the statics solved, the adhesion peels
+// what it cannot hold. Returns the equilibrium.
+Eigen::VectorXd Release(const BeamModel<2>& model, SubstrateContact<2>& contact, double gamma) {
   contact.StickAll();
-  const NonlinearStaticSolution solution = SolveNonlinearStatic(model, contact, LoadCase{});
+  NonlinearStaticOptions options;
+  options.start = contact.PressedDisplacement();
+  const NonlinearStaticSolution solution =
+      SolveNonlinearStatic(model, contact, LoadCase{}, options);
   EXPECT_EQ(solution.status, Status::kOk);
   // Adhesion holds the nodes, and between two stuck nodes the cubic is free to dip: at most as
   // an element pinned at its ends under the moment at the edge of contact, kappa h^2 / (9 sqrt 3),
@@ -223,6 +238,12 @@ ContactSummary Release(const BeamModel<2>& model, double gamma) {
   const double kappa = std::sqrt(2.0 * test::ReferenceSection().width * gamma / BendingStiffness());
   const double dip = kappa * h * h / (9.0 * std::sqrt(3.0));
   EXPECT_LE(contact.Penetration(solution.displacement), contact.tolerance() + dip);
+  return solution.displacement;
+}
+
+ContactSummary Release(const BeamModel<2>& model, double gamma) {
+  SubstrateContact<2> contact(model, StictionOptions(gamma));
+  Release(model, contact, gamma);
   return contact.Summary();
 }
 
@@ -245,14 +266,82 @@ TEST(StictionTest, StuckCantileverFreeSpanMatchesTheEnergyReleaseRateBalance) {
   }
 }
 
-TEST(StictionTest, ShortCantileverSpringsFreeAndLongOneStaysStuck) {
+// The map of shapes against length, released from lying flat: free below the arc-shaped
+// detachment length (101 um here), stuck by its tip (arc) up to the S-shaped span (142 um), and
+// S-shaped beyond, on both sides of both lengths. The tip's criterion is exact for the Hermite
+// elements (see below), so 1 % either side of the arc length is told apart; the S span is resolved
+// to about an element (1.4 um at 100 elements), so its sides are taken 10 % away.
+TEST(StictionTest, ShapeAgainstLengthIsFreeThenArcThenS) {
   const double gamma = 0.02;
-  const double span = StuckSpan(gamma, kReferenceGap);
-  const ContactSummary short_beam = Release(PlanarCantilever(0.8 * span, 40), gamma);
-  EXPECT_EQ(short_beam.state, ContactState::kFree);
-  EXPECT_NEAR(short_beam.detached_length_m, 0.8 * span, 1e-12);
-  const ContactSummary long_beam = Release(PlanarCantilever(1.5 * span, 60), gamma);
-  EXPECT_TRUE(long_beam.Stuck());
+  const double arc = ArcLength(gamma, kReferenceGap), span = StuckSpan(gamma, kReferenceGap);
+  struct Case {
+    double length;
+    StuckShape shape;
+  };
+  for (const Case c : {Case{0.5 * arc, StuckShape::kFree}, Case{0.99 * arc, StuckShape::kFree},
+                       Case{1.01 * arc, StuckShape::kArc}, Case{0.9 * span, StuckShape::kArc},
+                       Case{1.1 * span, StuckShape::kS}, Case{2.0 * span, StuckShape::kS}}) {
+    const ContactSummary summary = Release(PlanarCantilever(c.length, 100), gamma);
+    EXPECT_EQ(summary.shape, c.shape) << c.length / arc << " arc lengths";
+    EXPECT_EQ(summary.Stuck(), c.shape != StuckShape::kFree) << c.length / arc << " arc lengths";
+    if (c.shape == StuckShape::kArc) {  // touching by the tip alone
+      EXPECT_EQ(summary.contact_length_m, 0.0);
+      EXPECT_NEAR(summary.detached_length_m, c.length, 1e-12);
+    }
+    if (c.shape == StuckShape::kS) {
+      EXPECT_NEAR(summary.detached_length_m, span, 0.02 * span);
+    }
+  }
+}
+
+// Stuck by its tip, the cantilever is the tip-loaded one with its tip held at -g and no moment
+// there: w(x) = -g x^2 (3L - x) / (2 L^3) and theta(L) = -3g / (2L), which the Hermite elements
+// hold exactly at the nodes, so the shape's error is the penetration the multipliers leave (under
+// the 1e-4 of the gap the tolerance allows). The energy release rate at the tip, p^2 theta / b,
+// is then G = 3 E t^3 g^2 / (8 L^4) to twice that (G goes as g^2).
+TEST(StictionTest, ArcShapedCantileverHasTheTipLoadedShapeAndItsEnergyReleaseRate) {
+  const double gamma = 0.02, g = kReferenceGap;
+  const double arc = ArcLength(gamma, g);
+  const RectangularSection section = test::ReferenceSection();
+  for (double ratio : {1.05, 1.2, 1.35}) {
+    const double length = ratio * arc;
+    const BeamModel<2> model = PlanarCantilever(length, 40);
+    SubstrateContact<2> contact(model, StictionOptions(gamma));
+    const Eigen::VectorXd d = Release(model, contact, gamma);
+    ASSERT_EQ(contact.Summary().shape, StuckShape::kArc) << ratio;
+    const int tip = contact.NodeCount() - 1;
+    EXPECT_EQ(contact.NodeState(tip), ContactState::kStuck);
+    const Eigen::MatrixXd nodes = BeamField<2>(model, d).AtNodes();
+    for (int node = 1; node < model.NodeCount(); ++node) {
+      const double x = model.NodeX()[node] * model.units().length;
+      const double w = -g * x * x * (3.0 * length - x) / (2.0 * std::pow(length, 3));
+      EXPECT_NEAR(nodes(node, 1), w, 1e-4 * g) << ratio << ": x = " << x;
+    }
+    EXPECT_NEAR(nodes(model.NodeCount() - 1, 5), -1.5 * g / length, 1e-4 * 1.5 * g / length);
+    const double exact = 3.0 * test::Silicon().young_modulus * std::pow(section.thickness, 3) * g *
+                         g / (8.0 * std::pow(length, 4));
+    EXPECT_NEAR(contact.EnergyReleaseRate(tip, d), exact, 2e-4 * exact) << ratio;
+    EXPECT_LT(contact.EnergyReleaseRate(tip, d), gamma);
+  }
+}
+
+// A bridge has no free end: stuck, it lies flat along its middle, each half the S shape's span
+// from its clamp, or springs free: stuck from twice the span on. The last two stuck nodes come
+// off together (one left alone holds no area), so no pair of nodes holds a shorter bridge down.
+// The edges of contact are resolved to about an element (1.4 - 3 um), the sides taken 5 % away.
+TEST(StictionTest, BridgeIsStuckFlatFromTwiceTheSpanOn) {
+  const double gamma = 0.02, span = StuckSpan(gamma, kReferenceGap);
+  for (double length : {1.1 * span, 1.9 * span, 2.1 * span, 3.0 * span}) {
+    const BeamModel<2> model(MakeStructure(StructureKind::kBridge, length, test::Silicon(),
+                                           test::ReferenceSection(), 100, 0));
+    const ContactSummary summary = Release(model, gamma);
+    const bool stuck = length > 2.0 * span;
+    EXPECT_EQ(summary.shape, stuck ? StuckShape::kS : StuckShape::kFree) << length / span;
+    if (stuck) {
+      EXPECT_NEAR(summary.detached_length_m, span, 0.02 * span);
+      EXPECT_NEAR(summary.contact_length_m, length - 2.0 * span, 0.04 * span);
+    }
+  }
 }
 
 // A beam thrown at the substrate at 1 m/s (no adhesion): the penetration stays within the

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "cosmems/analysis/pullin_analysis.hpp"
 #include "cosmems/beam/stretching_force.hpp"
@@ -78,6 +79,42 @@ TEST(PullInTest, CantileverMatchesTheShootingSolution) {
   EXPECT_LT(result.displacement_m, result.travel_m);
 }
 
+// A rigid plate of length a on a heave spring k and a tilt spring k_t, pulled by the electrode
+// under it. Its heave path is the parallel plate's; tilting by theta changes the energy by
+// -eps0 b V^2 a^3 theta^2 / (24 (g - w)^3), so the tilt holds while
+// k_t > k a^2 s / (6 (1 - s)): with k_t = k a^2 / 18 it gives way at s = 1/4, before the heave's
+// fold at 1/3, while the load still rises: a bifurcation.
+struct TiltingPlatePath : ParallelPlatePath {
+  double plate = 1e-4;  ///< a [m]
+  double tilt = 0.0;    ///< k_t [N m]
+  Status Solve(double s, double& lambda, double& slope) const {
+    const Status heave = ParallelPlatePath::Solve(s, lambda, slope);
+    if (heave != Status::kOk) return heave;
+    return tilt > k * plate * plate * s / (6.0 * (1.0 - s)) ? Status::kOk
+                                                            : Status::kNotPositiveDefinite;
+  }
+};
+
+TEST(PullInTest, FoldSearchFindsABifurcationBeforeTheFold) {
+  TiltingPlatePath plate;
+  plate.tilt = plate.k * plate.plate * plate.plate / 18.0;
+  const FoldPoint found = FindFold(plate);
+  ASSERT_EQ(found.status, Status::kOk);
+  EXPECT_EQ(found.instability, Instability::kBifurcation);
+  // Bisected to the travel tolerance (1e-7); the load there is rising with slope 0.375 of the
+  // scale, so within 0.375 * 1e-7 of the scale: 1e-6 relative of the load 0.14 covers it.
+  EXPECT_NEAR(found.travel, 0.25, FoldOptions{}.travel_tolerance);
+  const double exact = plate.Scale() * 0.25 * 0.75 * 0.75;
+  EXPECT_NEAR(found.load, exact, 1e-6 * exact);
+  EXPECT_LT(found.solves, 60);
+  // A stiffer tilt outlasts the fold: the classic pull-in at a third of the gap.
+  plate.tilt = plate.k * plate.plate * plate.plate;
+  const FoldPoint fold = FindFold(plate);
+  ASSERT_EQ(fold.status, Status::kOk);
+  EXPECT_EQ(fold.instability, Instability::kLimitPoint);
+  EXPECT_NEAR(fold.travel, 1.0 / 3.0, 1e-4);
+}
+
 // The reference section over a 2 um gap: EI, b, and the conversion of a shooting beta into the
 // scale of a pressure P / d^n of unit coefficient (beta = b P L^4 / (EI g^(n+1))).
 struct Reference {
@@ -130,6 +167,56 @@ TEST(PullInTest, BridgeWithStretchingAndResidualStressMatchesTheShootingSolution
     ASSERT_EQ(result.status, Status::kOk) << c.name;
     EXPECT_NEAR(result.voltage_v, exact, 1e-5 * exact) << c.name;
     EXPECT_NEAR(result.travel_m / ref.gap, travel, 1e-3) << c.name;
+  }
+}
+
+// Pull-in across gap / thickness from 0.1 to 10 against the shooting solution: the 200 um
+// cantilever (linear: its axis slides freely, and the ratio only scales the voltage as g^1.5)
+// and the 100 um bridge with mid-plane stretching, kappa = 6 g^2 / t^2 from 0.06 to 600. Past
+// g / t ~ 1 the stretching dominates the bridge: its fold moves from 0.40 to 0.65 of the gap and
+// the voltage rises 4 decades over the range instead of 1.5, and the tension (tau up to ~2000)
+// draws the bending into boundary layers at the clamps, L / sqrt(tau) wide (2 um at g / t = 10).
+// 20 elements (the CLI's default, 5 um each) leave the bridge's voltage within 1e-3 there
+// (measured 7.8e-4; 2.9e-5 at g / t = 3), 80 within 1e-5 everywhere (the error falls as h^4);
+// the cantilever's within 1e-6. The travel sits where the path is flat: within 1e-3 of the gap.
+TEST(PullInTest, PullInMatchesTheShootingSolutionAcrossGapToThickness) {
+  const RectangularSection section = test::ReferenceSection();
+  const double t = section.thickness;
+  const double ei = test::Silicon().young_modulus * section.SecondMomentZ();
+  struct Case {
+    StructureKind kind;
+    int elements;
+    double tolerance;
+  };
+  for (const Case c :
+       {Case{StructureKind::kCantilever, 20, 1e-6}, Case{StructureKind::kBridge, 20, 1e-3},
+        Case{StructureKind::kBridge, 80, 1e-5}}) {
+    const bool bridge = c.kind == StructureKind::kBridge;
+    const double length = bridge ? 100e-6 : test::kReferenceLength;
+    const BeamModel<2> model(
+        MakeStructure(c.kind, length, test::Silicon(), section, c.elements, 1));
+    for (double ratio : {0.1, 0.3, 1.0, 2.0, 3.0, 5.0, 10.0}) {
+      const double gap = ratio * t;
+      BeamShooting shooting(bridge, 2, 0.0, bridge ? 6.0 * ratio * ratio : 0.0);
+      const auto [travel, beta] = shooting.Fold();
+      const double exact = std::sqrt(2.0 * beta * ei * std::pow(gap, 3) /
+                                     (kVacuumPermittivity * section.width * std::pow(length, 4)));
+      std::optional<StretchingForce<2>> stretching;
+      if (bridge) stretching.emplace(model);
+      PullInOptions options;
+      options.electrode = {gap, 0.0, length};
+      options.control_x = bridge ? 0.5 * length : length;
+      const PullInResult result = SolvePullIn(model, options, stretching ? &*stretching : nullptr);
+      std::printf(
+          "%s, %d elements, g/t %4.1f: shooting travel %.6f V %.8g; beam travel %.6f V "
+          "%.8g (error %.1e, %d solves)\n",
+          bridge ? "bridge" : "cantilever", c.elements, ratio, travel, exact, result.travel_m / gap,
+          result.voltage_v, result.voltage_v / exact - 1.0, result.solves);
+      ASSERT_EQ(result.status, Status::kOk) << ratio;
+      EXPECT_EQ(result.instability, Instability::kLimitPoint) << ratio;
+      EXPECT_NEAR(result.voltage_v, exact, c.tolerance * exact) << ratio;
+      EXPECT_NEAR(result.travel_m / gap, travel, 1e-3) << ratio;
+    }
   }
 }
 

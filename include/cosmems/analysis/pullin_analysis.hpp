@@ -26,6 +26,7 @@ struct PullInOptions {
 
 struct PullInResult {
   Status status = Status::kOk;
+  Instability instability = Instability::kLimitPoint;  ///< how the stable path ends
   double scale = 0.0;            ///< the pressure's scale at the fold (V^2 for electrostatics)
   double voltage_v = 0.0;        ///< the pull-in voltage
   double travel_m = 0.0;         ///< deflection at control_x at pull-in (toward the substrate)
@@ -84,7 +85,9 @@ class FoldPath {
           std::abs(c) <= newton_.residual_tolerance * gap_;
       previous = norm;
       const Status factored = Factor();
-      if (factored != Status::kOk) return factored;
+      // Only a solved state that is not definite lies past the stable path; an iterate on the
+      // way there that is not tells nothing of it.
+      if (factored != Status::kOk) return converged ? factored : Status::kNotConverged;
       b_ = r1_;
       factor_.SolveInPlace(b_);
       const double eb = control_.Evaluate(b_);
@@ -164,6 +167,7 @@ PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const Pul
   PullInResult out;
   out.scale = fold.load;
   out.status = fold.status;
+  out.instability = fold.instability;
   out.solves = fold.solves;
   out.iterations = path.iterations();
   out.displacement = path.accepted();

@@ -58,12 +58,21 @@ struct ContactOptions {
 /// a stuck node at the edge of a stuck zone peels off when the energy its release would free,
 /// (1/2) p^2 c (p its reaction, c the compliance of its u_y with the other constraints held;
 /// virtual crack closure), exceeds Gamma times the adhered area it frees (the width times the
-/// elements between it and its stuck neighbours). A node with no stuck neighbour holds no area
-/// and comes off as soon as it is pulled. For a beam lying on the substrate this is the
-/// energy-release-rate balance G = M^2 / (2 E I b) = Gamma at the edge of contact, which gives the
-/// S-shaped stuck cantilever's free span (Mastrangelo & Hsu). The compliance is the linear beam's
-/// (K with the contact springs), so in dynamics the criterion is the quasi-static one. One node
-/// peels per Settle, the one furthest past the balance, and Newton re-converges before the next.
+/// elements between it and its stuck neighbours). A node with no stuck neighbour away from a free
+/// end holds no area and comes off as soon as it is pulled; so the release of one of a pair of
+/// stuck nodes frees both, and its energy is that of both reactions, (1/2) p^T C p over the pair's
+/// 2 x 2 compliance (without this a bridge stayed stuck on its middle two nodes at any length). For
+/// a beam lying on the substrate this is the energy-release-rate balance G = M^2 / (2 E I b) =
+/// Gamma at the edge of contact, which gives the S-shaped stuck cantilever's free span (Mastrangelo
+/// & Hsu). At a free end (a cantilever's tip, its rotation free) a stuck node may hold alone: the
+/// beam then touches by its tip, with no moment there (the arc shape), and the crack front is the
+/// tip itself. Its energy release rate is the compliance method's, G = (p^2 / 2b) dc/ds with s the
+/// span to the contact point; reciprocity gives dc/ds = 2 theta, theta the slope at the node under
+/// a unit force there, so G = p^2 theta / b (3 E t^3 g^2 / (8 L^4) for the cantilever: the
+/// arc-shaped detachment length of de Boer & Michalske). The tip lets go when G exceeds Gamma. The
+/// compliance is the linear beam's (K with the contact springs), so in dynamics the criterion is
+/// the quasi-static one. One node peels per Settle, the one furthest past the balance, and Newton
+/// re-converges before the next.
 ///
 /// Adhesion acts at the nodes; the points between them only stop the beam, in the elements no
 /// stuck node holds.
@@ -108,6 +117,8 @@ class SubstrateContact final : public NonlinearForce {
       point.node = node;
       point.x = model.NodeX()[node];
       point.width = model.description().elements[e].section.width / u.length;
+      const bool end = node == 0 || node == model.NodeCount() - 1;
+      point.slope = end ? model.dofs().Reduced(node, NodalDof::kRz) : -1;
       points_.push_back(point);
       largest = std::max(largest, stiffness_(w, w));
     }
@@ -318,6 +329,18 @@ class SubstrateContact final : public NonlinearForce {
     return deepest * units_.length;
   }
 
+  /// The energy release rate [J/m^2] at stuck node k (an index as NodeState's) in the state d
+  /// (reduced, internal units): the rate Settle() weighs against the work of adhesion at the edge
+  /// of a stuck zone, or at a free end held alone (the tip of an arc-shaped cantilever). NaN
+  /// where no crack front is (k not stuck, or inside a stuck zone); +inf at a node held alone
+  /// away from a free end. Allocates nothing.
+  double EnergyReleaseRate(int k, const Eigen::VectorXd& d) {
+    const std::size_t node = Checked(k);
+    if (!stuck_[node]) return std::numeric_limits<double>::quiet_NaN();
+    bool factored = false;
+    return ReleaseRate(node, d, factored);
+  }
+
   /// The state of the last committed step.
   ContactSummary Summary() const {
     ContactSummary out;
@@ -331,6 +354,7 @@ class SubstrateContact final : public NonlinearForce {
       }
     }
     out.detached_length_m = (first < 0.0 ? length_ : first) * units_.length;
+    if (out.Stuck()) out.shape = out.contact_length_m > 0.0 ? StuckShape::kS : StuckShape::kArc;
     return out;
   }
   const ContactEvents& events() const { return events_; }
@@ -354,6 +378,7 @@ class SubstrateContact final : public NonlinearForce {
     double width = 0.0;  ///< internal units (nodes)
     double h = 0.0;      ///< the element's length, internal units (elements)
     std::array<int, 2> ends{-1, -1};  ///< the element's nodes' points (-1: a support)
+    int slope = -1;  ///< a free end's theta_z (reduced; -1: not an end, or its rotation held)
   };
 
   // Whether point k holds: a node's always; an element's once placed, unless adhesion holds the
@@ -433,32 +458,17 @@ class SubstrateContact final : public NonlinearForce {
     return points_[b].node == points_[a].node + 1;
   }
 
-  // Releases the pulled stuck node whose release frees the most energy per area beyond Gamma;
-  // returns whether one was released.
+  // Releases the pulled stuck node whose energy release rate exceeds Gamma the most; returns
+  // whether one was released.
   bool Peel(const Eigen::VectorXd& d) {
     bool factored = false;
     std::size_t chosen = node_count_;
-    double worst = 1.0;  // G / Gamma of the chosen node
+    double worst = options_.adhesion_energy;  // G of the chosen node [J/m^2]
     for (std::size_t k = 0; k < node_count_; ++k) {
-      if (!stuck_[k]) continue;
-      const double p = Reaction(k, Gap(points_[k], d));
-      if (p >= 0.0) continue;  // pressed, or not pulled: nothing to peel
-      const bool left = k > 0 && Adjacent(k - 1, k) && stuck_[k - 1];
-      const bool right = k + 1 < node_count_ && Adjacent(k, k + 1) && stuck_[k + 1];
-      if (left && right) continue;  // inside a stuck zone: peeling starts at its edges
-      double freed = 0.0;           // the adhered length the release frees (internal)
-      if (left) freed += points_[k].x - points_[k - 1].x;
-      if (right) freed += points_[k + 1].x - points_[k].x;
-      double ratio = std::numeric_limits<double>::infinity();
-      if (freed > 0.0) {
-        if (!factored && !FactorCompliance(d)) return false;
-        factored = true;
-        const double energy = 0.5 * p * p * Compliance(k) * units_.force * units_.length;
-        const double area = points_[k].width * freed * units_.length * units_.length;
-        ratio = energy / (options_.adhesion_energy * area);
-      }
-      if (ratio > worst) {
-        worst = ratio;
+      if (!stuck_[k] || Reaction(k, Gap(points_[k], d)) >= 0.0) continue;  // pressed: no peel
+      const double rate = ReleaseRate(k, d, factored);
+      if (rate > worst) {  // false for NaN: no crack front there
+        worst = rate;
         chosen = k;
       }
     }
@@ -466,6 +476,39 @@ class SubstrateContact final : public NonlinearForce {
     stuck_[chosen] = 0;
     lambda_[chosen] = 0.0;
     return true;
+  }
+
+  // G at stuck node k [J/m^2]: the virtual crack closure over the adhered length its release
+  // frees, or at a lone free end the compliance method's p^2 theta / b; +inf at a lone node
+  // elsewhere (it holds no area), NaN inside a stuck zone (no crack front) or when the compliance
+  // cannot be factored. `factored` says whether the compliance is factored for d.
+  double ReleaseRate(std::size_t k, const Eigen::VectorXd& d, bool& factored) {
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    const bool left = k > 0 && Adjacent(k - 1, k) && stuck_[k - 1];
+    const bool right = k + 1 < node_count_ && Adjacent(k, k + 1) && stuck_[k + 1];
+    if (left && right) return kNone;
+    double freed = 0.0;  // the adhered length the release frees (internal)
+    if (left) freed += points_[k].x - points_[k - 1].x;
+    if (right) freed += points_[k + 1].x - points_[k].x;
+    const Point& point = points_[k];
+    if (freed == 0.0 && point.slope < 0) return std::numeric_limits<double>::infinity();
+    if (!factored && !FactorCompliance(d)) return kNone;
+    factored = true;
+    const double p = Reaction(k, Gap(point, d));
+    const double per_length = units_.force / units_.length;  // internal force / length to N/m
+    if (freed == 0.0) return p * p * std::abs(Compliance(k).slope) / point.width * per_length;
+    // A zone of two nodes away from a free end: the partner left alone holds no area and comes
+    // off at once, so the release frees both, (1/2) p^T C p with C their 2 x 2 compliance.
+    const std::size_t j = left ? k - 1 : k + 1;
+    const bool partner_held = left ? j > 0 && Adjacent(j - 1, j) && stuck_[j - 1]
+                                   : j + 1 < node_count_ && Adjacent(j, j + 1) && stuck_[j + 1];
+    double energy = 0.0;
+    if (!partner_held && points_[j].slope < 0) {
+      energy = PairEnergy(k, j, p, Reaction(j, Gap(points_[j], d)));
+    } else {
+      energy = 0.5 * p * p * Compliance(k).deflection;
+    }
+    return energy / (point.width * freed) * per_length;
   }
 
   // Factors K plus the springs of the active constraints; false if it is not definite.
@@ -485,17 +528,44 @@ class SubstrateContact final : public NonlinearForce {
     return compliance_.Compute(springs_).info() == Status::kOk;
   }
 
-  // The compliance of node k's u_y with its own spring removed, from the factor with it: Sherman-
-  // Morrison on c = e^T A^-1 e. With the penalty 1e4 times the nodal stiffness the subtraction
-  // loses about four of sixteen digits.
-  double Compliance(std::size_t k) {
-    const int w = points_[k].dof[0];
+  // Node k's u_y and theta_z under a unit force on its u_y, with its own spring removed, from the
+  // factor with it: Sherman-Morrison, A0^-1 e = A^-1 e / (1 - k e^T A^-1 e). With the penalty 1e4
+  // times the nodal stiffness the subtraction loses about four of sixteen digits.
+  struct NodeCompliance {
+    double deflection = 0.0;  ///< c = e^T A0^-1 e (+inf when the spring held the node alone)
+    double slope = 0.0;       ///< theta_z (0 unless the node is a free end)
+  };
+  NodeCompliance Compliance(std::size_t k) {
+    const Point& point = points_[k];
     unit_.setZero();
-    unit_[w] = 1.0;
+    unit_[point.dof[0]] = 1.0;
     compliance_.SolveInPlace(unit_);
-    const double c = unit_[w];
+    const double c = unit_[point.dof[0]];
     const double rest = 1.0 - penalty_ * c;
-    return rest > 0.0 ? c / rest : std::numeric_limits<double>::infinity();
+    if (!(rest > 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
+    return {c / rest, point.slope >= 0 ? unit_[point.slope] / rest : 0.0};
+  }
+
+  // The energy freed by releasing nodes a and b together under their reactions pa and pb,
+  // (1/2) p^T C p, C their compliance with both springs removed: from S, the block of the factor's
+  // inverse with them, C = S (I - k S)^-1 (Woodbury); +inf when the springs held the pair alone.
+  double PairEnergy(std::size_t a, std::size_t b, double pa, double pb) {
+    const int wa = points_[a].dof[0], wb = points_[b].dof[0];
+    unit_.setZero();
+    unit_[wa] = 1.0;
+    compliance_.SolveInPlace(unit_);
+    const double saa = unit_[wa], sab = unit_[wb];
+    unit_.setZero();
+    unit_[wb] = 1.0;
+    compliance_.SolveInPlace(unit_);
+    const double sbb = unit_[wb];
+    // (I - k S)^-1 = adj / det, and C = S (I - k S)^-1.
+    const double m11 = 1.0 - penalty_ * saa, m12 = -penalty_ * sab, m22 = 1.0 - penalty_ * sbb;
+    const double det = m11 * m22 - m12 * m12;
+    if (!(det > 0.0) || !(m11 > 0.0)) return std::numeric_limits<double>::infinity();
+    const double caa = (saa * m22 - sab * m12) / det, cab = (sab * m11 - saa * m12) / det;
+    const double cbb = (sbb * m11 - sab * m12) / det;
+    return 0.5 * (caa * pa * pa + 2.0 * cab * pa * pb + cbb * pb * pb);
   }
 
   const SymmetricBandMatrix& stiffness_;
