@@ -52,6 +52,13 @@ TEST(SurfaceCliTest, ShorterCantileversStickByTheirTipOrSpringFree) {
   EXPECT_EQ(arc.at("contact").at("shape"), "arc");
   EXPECT_EQ(arc.at("contact_length_m").get<double>(), 0.0);
   EXPECT_NEAR(arc.at("detached_length_m").get<double>(), 120e-6, 1e-15);
+  // de Boer & Michalske's case as the issue put it: E = 164 GPa, t = 2.5 um, 10 um wide over
+  // 2 um, L = 140 um between the arc length (117.7 um) and the S span (166.5 um).
+  const nlohmann::json example =
+      RunJson({"cantilever-stiction", "--set", "material.young_modulus=164e9", "--set",
+               "structure.thickness=2.5e-6", "--set", "structure.width=10e-6", "--set",
+               "structure.length=140e-6"});
+  EXPECT_EQ(example.at("shape"), "arc");
   const nlohmann::json free = RunJson({"cantilever-stiction", "--set", "structure.length=95e-6"});
   EXPECT_EQ(free.at("status"), "ok");
   EXPECT_FALSE(free.at("stuck").get<bool>());

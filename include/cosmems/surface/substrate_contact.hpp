@@ -496,7 +496,11 @@ class SubstrateContact final : public NonlinearForce {
     factored = true;
     const double p = Reaction(k, Gap(point, d));
     const double per_length = units_.force / units_.length;  // internal force / length to N/m
-    if (freed == 0.0) return p * p * std::abs(Compliance(k).slope) / point.width * per_length;
+    if (freed == 0.0) {  // a free end held alone: +inf if nothing but its own spring held it
+      const NodeCompliance c = Compliance(k);
+      if (!std::isfinite(c.deflection)) return std::numeric_limits<double>::infinity();
+      return p * p * std::abs(c.slope) / point.width * per_length;
+    }
     // A zone of two nodes away from a free end: the partner left alone holds no area and comes
     // off at once, so the release frees both, (1/2) p^T C p with C their 2 x 2 compliance.
     const std::size_t j = left ? k - 1 : k + 1;
