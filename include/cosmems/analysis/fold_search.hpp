@@ -29,7 +29,7 @@ struct FoldOptions {
 enum class Instability {
   kLimitPoint,   ///< the load reaches its largest value (the fold): the classic pull-in
   kBifurcation,  ///< the path's matrix turns singular while the load still rises: another mode
-                 ///< (the antisymmetric one of a strongly stretched bridge) takes over
+                 ///< (a symmetric device's tilt, say) takes over
 };
 
 constexpr const char* ToString(Instability instability) {
@@ -60,10 +60,10 @@ struct FoldPoint {
 /// shortens the step). The load at the fold is the quadratic model's, lambda + slope (s* - s)/2.
 ///
 /// The path's matrix can also turn singular where the load still rises: its null vector is then
-/// orthogonal to the load (a symmetric beam's antisymmetric mode), the controlled travel passes
-/// smoothly, and the states beyond are unstable under load control. A solve found unstable bounds
-/// the stable part from above; steps halve toward that bound until the bracket is narrower than
-/// options.travel_tolerance, and a slope still above the slope tolerance there marks a
+/// orthogonal to the load (a symmetric structure's antisymmetric mode), the controlled travel
+/// passes smoothly, and the states beyond are unstable under load control. A solve found unstable
+/// bounds the stable part from above; steps halve toward that bound until the bracket is narrower
+/// than options.travel_tolerance, and a slope still above the slope tolerance there marks a
 /// bifurcation, whose load is lambda + slope times half the bracket.
 template <typename Path>
 FoldPoint FindFold(Path& path, const FoldOptions& options = {}) {
