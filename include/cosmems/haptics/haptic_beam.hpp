@@ -19,9 +19,8 @@ struct HapticPhysicsOptions {
   double tick_s = 1e-3;  ///< simulated time per Advance() (the servo period)
   /// Implicit steps per tick. The reference cantilever's first mode (68.8 kHz) is far above the
   /// servo rate, so the steps do not resolve it whatever their number: the hand feels the
-  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp with contact, stiction and
-  /// the Casimir force: medians of 7, 19 and 103 us for 1, 2 and 10 steps, largest ticks of
-  /// 236, 166 us and 1.2 ms); 2 take every tick of the tests' lay-downs and peels.
+  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp; the figures are in
+  /// doc/surface.md); 2 take every tick of the tests' lay-downs and peels.
   int substeps = 2;
   /// Generalised-alpha's spectral radius: 0 annihilates the unresolved vibrations (the hand
   /// feels the quasi-static beam, as it would the real one) and adds no energy at impacts.
