@@ -158,11 +158,10 @@ class BeamShooting {
     Vector u = u_;
     if (previous_s_ != s_) u += (s - s_) / (s_ - previous_s_) * (u_ - previous_);
     for (int iteration = 0; iteration < 50; ++iteration) {
-      const Vector r = Residual(u, s);
-      const double size = r.lpNorm<1>();
-      if (size < 1e-11 * (1.0 + std::abs(u[kUnknowns - 2]))) break;
-      // A segment's starting state moves that segment's end alone; beta and tau move them all.
       const Ends ends = Shoot(u);
+      const Vector r = Residual(u, ends, s);
+      if (r.lpNorm<1>() < 1e-11 * (1.0 + std::abs(u[kUnknowns - 2]))) break;
+      // A segment's starting state moves that segment's end alone; beta and tau move them all.
       Eigen::Matrix<double, kUnknowns, kUnknowns> jacobian;
       for (int j = 0; j < kUnknowns; ++j) {
         Vector v = u;

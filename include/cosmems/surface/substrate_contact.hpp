@@ -541,13 +541,19 @@ class SubstrateContact final : public NonlinearForce {
   };
   NodeCompliance Compliance(std::size_t k) {
     const Point& point = points_[k];
-    unit_.setZero();
-    unit_[point.dof[0]] = 1.0;
-    compliance_.SolveInPlace(unit_);
-    const double c = unit_[point.dof[0]];
+    const Eigen::VectorXd& response = UnitResponse(point.dof[0]);
+    const double c = response[point.dof[0]];
     const double rest = 1.0 - penalty_ * c;
     if (!(rest > 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
-    return {c / rest, point.slope >= 0 ? unit_[point.slope] / rest : 0.0};
+    return {c / rest, point.slope >= 0 ? response[point.slope] / rest : 0.0};
+  }
+
+  // The displacement under a unit force on dof w, with every active spring (the factor's).
+  const Eigen::VectorXd& UnitResponse(int w) {
+    unit_.setZero();
+    unit_[w] = 1.0;
+    compliance_.SolveInPlace(unit_);
+    return unit_;
   }
 
   // The energy freed by releasing nodes a and b together under their reactions pa and pb,
@@ -555,14 +561,8 @@ class SubstrateContact final : public NonlinearForce {
   // inverse with them, C = S (I - k S)^-1 (Woodbury); +inf when the springs held the pair alone.
   double PairEnergy(std::size_t a, std::size_t b, double pa, double pb) {
     const int wa = points_[a].dof[0], wb = points_[b].dof[0];
-    unit_.setZero();
-    unit_[wa] = 1.0;
-    compliance_.SolveInPlace(unit_);
-    const double saa = unit_[wa], sab = unit_[wb];
-    unit_.setZero();
-    unit_[wb] = 1.0;
-    compliance_.SolveInPlace(unit_);
-    const double sbb = unit_[wb];
+    const double saa = UnitResponse(wa)[wa], sab = unit_[wb];
+    const double sbb = UnitResponse(wb)[wb];
     // (I - k S)^-1 = adj / det, and C = S (I - k S)^-1.
     const double m11 = 1.0 - penalty_ * saa, m12 = -penalty_ * sab, m22 = 1.0 - penalty_ * sbb;
     const double det = m11 * m22 - m12 * m12;
