@@ -13,11 +13,11 @@
 #include <cmath>
 #include <vector>
 
+#include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/step_timing.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
-#include "cosmems/rod/cosserat_newmark_integrator.hpp"
-#include "cosmems/rod/cosserat_static_solver.hpp"
+#include "cosmems/time/cosserat_newmark_integrator.hpp"
 #include "reference_beam.hpp"
 #include "rod/elastica.hpp"
 
@@ -194,7 +194,7 @@ void BM_WarmResolve(benchmark::State& state) {
   long iterations = 0;
   TimeEachCall(state, [&] {
     if (solver.Solve(toward_b ? b : a) != Status::kOk) state.SkipWithError("re-solve failed");
-    iterations += solver.last_iterations();
+    iterations += solver.last_stats().iterations;
     toward_b = !toward_b;
   });
   state.counters["iterations"] =
@@ -211,7 +211,7 @@ void BM_StaticSolveFromRest(benchmark::State& state) {
   TimeEachCall(state, [&] {
     solver.Reset();
     if (solver.Solve(loads) != Status::kOk) state.SkipWithError("solve failed");
-    iterations += solver.last_iterations();
+    iterations += solver.last_stats().iterations;
   });
   state.counters["iterations"] =
       benchmark::Counter(static_cast<double>(iterations), benchmark::Counter::kAvgIterations);
@@ -234,7 +234,7 @@ void BM_DynamicStep(benchmark::State& state) {
   long iterations = 0;
   TimeEachCall(state, [&] {
     if (integrator.Step(loads) != Status::kOk) state.SkipWithError("step failed");
-    iterations += integrator.last_iterations();
+    iterations += integrator.last_stats().iterations;
   });
   state.counters["iterations"] =
       benchmark::Counter(static_cast<double>(iterations), benchmark::Counter::kAvgIterations);

@@ -2,6 +2,7 @@
 // about 69 periods), by the modal path (4 modes, exact propagation, 1 us steps so f1 is sampled
 // 14 times a period) and by the full-order band path (20 steps a period of f1). The load is
 // updated every step, as a stylus would update it.
+#include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "reference_beam.hpp"

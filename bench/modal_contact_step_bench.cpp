@@ -35,19 +35,22 @@ Eigen::VectorXd TipForce(const BeamModel<2>& model) {
 }
 
 // Runs `step(amplitude)` over the swinging force; a failed step ends the benchmark. The mean
-// Newton iterations and factorisations a step go beside the times.
+// Newton iterations (corrections), residual evaluations and factorisations a step go beside the
+// times.
 template <typename Integrator, typename Step>
 void RunTouchdown(benchmark::State& state, const Integrator& integrator, Step&& step) {
-  long i = 0, iterations = 0, factorizations = 0;
+  long i = 0, iterations = 0, evaluations = 0, factorizations = 0;
   auto next = [&] {
     ++i;
     const Status status = step(std::sin(2.0 * kPi * kFrequency * kStep * static_cast<double>(i)));
     if (status != Status::kOk) state.SkipWithError("a step failed");
-    iterations += integrator.last_iterations();
-    factorizations += integrator.last_factorizations();
+    iterations += integrator.last_stats().iterations;
+    evaluations += integrator.last_stats().evaluations;
+    factorizations += integrator.last_stats().factorizations;
   };
   for (auto _ : state) next();
   state.counters["iterations"] = static_cast<double>(iterations) / static_cast<double>(i);
+  state.counters["residuals"] = static_cast<double>(evaluations) / static_cast<double>(i);
   state.counters["factorizations"] = static_cast<double>(factorizations) / static_cast<double>(i);
   bench::RecordStepExtremes(state, next);
 }

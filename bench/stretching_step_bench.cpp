@@ -27,16 +27,19 @@ void BM_StretchingNewmarkStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  long iterations = 0, factorizations = 0, steps = 0;
+  long iterations = 0, evaluations = 0, factorizations = 0, steps = 0;
   auto step = [&] {
     const Status status = integrator.Step(f);
     benchmark::DoNotOptimize(status);
-    iterations += integrator.last_iterations();
-    factorizations += integrator.last_factorizations();
+    iterations += integrator.last_stats().iterations;
+    evaluations += integrator.last_stats().evaluations;
+    factorizations += integrator.last_stats().factorizations;
     ++steps;
   };
   for (auto _ : state) step();
   state.counters["newton_per_step"] = static_cast<double>(iterations) / static_cast<double>(steps);
+  state.counters["residuals_per_step"] =
+      static_cast<double>(evaluations) / static_cast<double>(steps);
   state.counters["factor_per_step"] =
       static_cast<double>(factorizations) / static_cast<double>(steps);
   bench::RecordStepExtremes(state, step);

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "cosmems/analysis/step_timing.hpp"
-#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"

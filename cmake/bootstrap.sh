@@ -7,6 +7,8 @@
 #   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and the trajectory reader (clang)
 #   bash cmake/bootstrap.sh report [OUTDIR [ARGS...]]  the accuracy-versus-time report: CSV,
 #                                     Markdown and plots in OUTDIR (default build/release/accuracy_report)
+#   bash cmake/bootstrap.sh docs            the API reference by Doxygen (build/release/doc/api/html);
+#                                     any Doxygen warning fails it
 # Installs the Debian packages the build needs when run as root or with password-less sudo;
 # otherwise prints the exact apt-get line and stops. COSMEMS_BUILD_DIR overrides build/release.
 set -euo pipefail
@@ -22,6 +24,8 @@ packages+=(pkg-config libglfw3-dev libgl-dev libimgui-dev libstb-dev xvfb xauth 
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 # The report plots with gnuplot; only `report` needs it.
 if [ "${1:-}" = report ]; then packages+=(gnuplot-nox); fi
+# The API reference needs Doxygen; only `docs` does.
+if [ "${1:-}" = docs ]; then packages+=(doxygen); fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -114,6 +118,11 @@ case "${1:-}" in
     configure ON
     cmake --build "$build_dir" -j"$jobs" --target accuracy_cost_bench
     COSMEMS_BUILD_DIR="$build_dir" exec bash bench/accuracy_cost_report.sh "$out" "$@" ;;
-  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS] | report [OUTDIR [ARGS...]]" >&2
+  docs)
+    # Doxygen only, no compiler: the target runs doxygen over include/ and fails on a warning.
+    configure OFF
+    cmake --build "$build_dir" --target cosmems_doxygen
+    echo "API reference: $build_dir/doc/api/html/index.html" ;;
+  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS] | report [OUTDIR [ARGS...]] | docs" >&2
      exit 2 ;;
 esac

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"

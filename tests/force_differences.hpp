@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 
 namespace cosmems::test {
 

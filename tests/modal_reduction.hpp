@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/time/modal_model.hpp"
 
 namespace cosmems::test {

@@ -3,7 +3,7 @@
 // r(d) = 0: a nonlinear force that adds nothing, for the integrators' linear limits and for
 // surface pressures ramped alone.
 
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 
 namespace cosmems::test {
 

@@ -4,9 +4,9 @@
 
 #include "contact_report.hpp"
 #include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
-#include "cosmems/rod/cosserat_static_solver.hpp"
 #include "cosmems/rod/rod_field.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/scene_conversion.hpp"

@@ -3,7 +3,7 @@
 // The reference cantilever (silicon, 200 x 20 x 2 um, 20 planar elements) the haptic tests
 // touch, with its tip stiffness 3EI/L^3.
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/haptics/device_types.hpp"
 #include "cosmems/haptics/hand_scaling.hpp"
 #include "cosmems/surface/gap_force.hpp"

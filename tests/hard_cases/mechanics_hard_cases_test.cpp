@@ -9,11 +9,11 @@
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/buckling_analysis.hpp"
+#include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/pullin_analysis.hpp"
 #include "cosmems/analysis/static_analysis.hpp"
-#include "cosmems/rod/cosserat_static_solver.hpp"
 #include "hard_cases/hard_case_support.hpp"
 #include "rod/elastica.hpp"
 #include "test_beams.hpp"
@@ -328,8 +328,8 @@ TEST(ElasticaHardCaseTest, TipForceOfTwentyEiOverL2FollowsTheElasticaAtSecondOrd
     }
     previous = error;
     test::RecordFigure("load_steps_" + std::to_string(n), solver.last_load_steps());
-    test::RecordFigure("cuts_" + std::to_string(n), solver.last_cuts());
-    test::RecordFigure("newton_iterations_" + std::to_string(n), solver.last_iterations());
+    test::RecordFigure("cuts_" + std::to_string(n), solver.last_stats().cuts);
+    test::RecordFigure("newton_iterations_" + std::to_string(n), solver.last_stats().iterations);
   }
 }
 
@@ -360,7 +360,7 @@ TEST_P(FullCircleTest, EndMomentRollsTheRodIntoAClosedCircleOfRadiusEiOverM) {
   }
   EXPECT_LT(x.col(n).norm(), 1e-9 * l);
   EXPECT_NEAR(rod.TipRotation(solver.state()).z(), 2.0 * kPi, 1e-9);
-  test::RecordFigure("newton_iterations", solver.last_iterations());
+  test::RecordFigure("newton_iterations", solver.last_stats().iterations);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, FullCircleTest, ::testing::Values(3, 50, 1000));

@@ -109,8 +109,8 @@ inline StickReleaseRun RunStickReleaseCycles(int elements, long cycles) {
     for (std::size_t s = 0; s < script.size(); ++s) {
       run.status = integrator.Step(script[s]);
       ++run.steps;
-      run.iterations += integrator.last_iterations();
-      run.cuts += integrator.last_cuts();
+      run.iterations += integrator.last_stats().evaluations;
+      run.cuts += integrator.last_stats().cuts;
       if (run.status != Status::kOk) break;
       const Eigen::VectorXd& d = integrator.displacement();
       const Eigen::VectorXd& v = integrator.velocity();

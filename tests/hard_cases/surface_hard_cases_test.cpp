@@ -11,9 +11,9 @@
 
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/pullin_analysis.hpp"
+#include "cosmems/beam/force_sum.hpp"
+#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/beam/stretching_force.hpp"
-#include "cosmems/core/force_sum.hpp"
-#include "cosmems/core/force_tuple.hpp"
 #include "haptics/haptic_test_beam.hpp"
 #include "hard_cases/hard_case_support.hpp"
 #include "hard_cases/stick_release_cycles.hpp"
@@ -219,10 +219,10 @@ class OneNanometreGapTest : public ::testing::TestWithParam<OneNanometreCase> {
     const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model.FreeDofCount());
     ASSERT_EQ(integrator.Initialize(zero, zero, zero), Status::kOk);
     EXPECT_EQ(integrator.Step(zero), Status::kNonFinite);
-    EXPECT_EQ(integrator.last_cuts(), NewtonOptions{}.max_cuts);
+    EXPECT_EQ(integrator.last_stats().cuts, NewtonOptions{}.max_cuts);
     EXPECT_EQ(integrator.displacement().norm(), 0.0);
     EXPECT_EQ(integrator.velocity().norm(), 0.0);
-    test::RecordFigure("iterations_of_the_refused_step", integrator.last_iterations());
+    test::RecordFigure("iterations_of_the_refused_step", integrator.last_stats().evaluations);
   }
 
   // A substrate 2 um down whose contact plane stands 1 nm off it, the tip pushed down by three
@@ -353,8 +353,8 @@ TEST_P(StiffContactTest, PressAndPullOffThreeTimesWithinTheToleranceAndTheEnergy
   auto run = [&](auto& integrator, auto&& step) {
     for (long i = 1; i <= steps; ++i) {
       const Status status = step(integrator, HandForce(static_cast<double>(i) * time_step));
-      cuts += integrator.last_cuts();
-      iterations += integrator.last_iterations();
+      cuts += integrator.last_stats().cuts;
+      iterations += integrator.last_stats().evaluations;
       if (status != Status::kOk) {
         ++refused;
         EXPECT_EQ(status, Status::kNotPositiveDefinite) << "step " << i;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <vector>
 
-#include "cosmems/rod/cosserat_newmark_integrator.hpp"
-#include "cosmems/rod/cosserat_static_solver.hpp"
+#include "cosmems/analysis/cosserat_static_solver.hpp"
+#include "cosmems/time/cosserat_newmark_integrator.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {

@@ -5,7 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
-#include "cosmems/core/force_tuple.hpp"
+#include "cosmems/analysis/modal_reduction.hpp"
+#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/squeeze_film.hpp"

@@ -4,6 +4,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "test_beams.hpp"

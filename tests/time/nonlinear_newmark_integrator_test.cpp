@@ -60,7 +60,7 @@ double Duffing(GeneralizedAlphaParameters p, int steps, NewtonOptions options = 
   EXPECT_EQ(integrator.Initialize(Vec(0.8), Vec(0.0), Vec(0.0)), Status::kOk);
   for (int i = 1; i <= steps; ++i) {
     EXPECT_EQ(integrator.Step(Vec(0.3 * std::sin(2 * i * dt))), Status::kOk);
-    if (cuts != nullptr) *cuts += integrator.last_cuts();
+    if (cuts != nullptr) *cuts += integrator.last_stats().cuts;
   }
   return integrator.displacement()[0];
 }
@@ -146,10 +146,10 @@ TEST(NonlinearNewmarkIntegratorTest, KeptFactorReachesPlainNewtonsStatesWithFewe
   for (int i = 0; i < steps; ++i) {
     ASSERT_EQ(kept.Step(f), Status::kOk);
     ASSERT_EQ(newton.Step(f), Status::kOk);
-    kept_iterations += kept.last_iterations();
-    kept_factorizations += kept.last_factorizations();
-    newton_iterations += newton.last_iterations();
-    newton_factorizations += newton.last_factorizations();
+    kept_iterations += kept.last_stats().evaluations;
+    kept_factorizations += kept.last_stats().factorizations;
+    newton_iterations += newton.last_stats().evaluations;
+    newton_factorizations += newton.last_stats().factorizations;
   }
   EXPECT_LT((kept.displacement() - newton.displacement()).norm(),
             1e-8 * newton.displacement().norm());

@@ -2,13 +2,13 @@
 
 #include <stdexcept>
 
+#include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/transient_options.hpp"
 #include "cosmems/analysis/transient_recorder.hpp"
 #include "cosmems/analysis/transient_result.hpp"
-#include "cosmems/rod/cosserat_newmark_integrator.hpp"
 #include "cosmems/rod/cosserat_rod.hpp"
-#include "cosmems/rod/cosserat_static_solver.hpp"
 #include "cosmems/rod/rod_loads.hpp"
+#include "cosmems/time/cosserat_newmark_integrator.hpp"
 
 namespace cosmems {
 

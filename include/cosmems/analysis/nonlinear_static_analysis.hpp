@@ -9,10 +9,12 @@
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/beam/load_vector.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/linalg/band_rank_one_cholesky.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
 
@@ -32,125 +34,157 @@ struct NonlinearStaticSolution {
   Status status = Status::kOk;
   Eigen::VectorXd displacement;  ///< reduced, internal units; the last converged state on failure
   double load_factor = 0.0;      ///< the share of the load carried: 1 when solved
-  int iterations = 0;            ///< Newton iterations over all load steps
+  int iterations = 0;            ///< Newton corrections over all load steps
   int load_steps = 0;            ///< accepted load steps
+  NewtonStats stats;             ///< what the solve cost, the load-step halvings as cuts
 };
 
 /// Statics with a nonlinear internal force: K d + r(d) + lambda r_s(d) = lambda f, lambda from
 /// 0 to 1, r_s an optional stateless force ramped with the loads (surface pressures, which leave no
 /// unloaded equilibrium to start from; a fold of the ramp stops the load steps there).
 ///
-/// Adaptive load stepping: a step that Newton solves doubles the next one (up to what remains),
-/// one that fails is retried at half the size from the last converged state. Newton uses the
-/// force's consistent tangent (band plus rank-one) and a backtracking line search on the
-/// residual norm, so a correction that overshoots a stiffening force is shortened instead of
-/// thrown away. Converged on NewtonOptions' relative residual or increment.
+/// Adaptive load stepping (NewtonDriver::RampLoad): a step that Newton solves doubles the next
+/// one (up to what remains), one that fails is retried at half the size from the last converged
+/// state. Newton (NewtonDriver) uses the force's consistent tangent (band plus rank-one),
+/// factored afresh at every iteration, and a backtracking line search on the residual norm, so a
+/// correction that overshoots a stiffening force is shortened instead of thrown away. Converged
+/// on NewtonOptions' relative residual or increment.
+template <int Dim>
+class NonlinearStaticSolve {
+ public:
+  NonlinearStaticSolve(const BeamModel<Dim>& model, NonlinearForce& force,
+                       const NonlinearStaticOptions& options, NonlinearForce* ramped)
+      : k_(model.Stiffness()),
+        force_(force),
+        ramped_(ramped),
+        options_(options),
+        newton_(options.newton) {
+    const int n = model.FreeDofCount();
+    tangent_ = ForceTangent(n, k_.bandwidth());
+    ramped_tangent_ = ForceTangent(n, k_.bandwidth());
+    jacobian_ = SymmetricBandMatrix(n, k_.bandwidth());
+    for (Eigen::VectorXd* v : {&rs_, &d_, &r_, &residual_, &step_, &trial_, &kd_}) v->setZero(n);
+  }
+
+  NonlinearStaticSolution Solve(const Eigen::VectorXd& f) {
+    f_ = &f;
+    NonlinearStaticSolution out;
+    out.displacement = Eigen::VectorXd::Zero(d_.size());
+    if (options_.start.size() == d_.size()) out.displacement = options_.start;
+    auto attempt = [&](double target) {
+      d_ = out.displacement;
+      lambda_ = target;
+      stale_ = true;
+      return newton_.Solve(*this, std::numeric_limits<double>::quiet_NaN());
+    };
+    auto accept = [&] {
+      force_.Commit(d_);
+      out.displacement = d_;
+      ++out.load_steps;
+    };
+    out.status = newton_.RampLoad(1.0, options_.min_load_step, out.load_factor, attempt, accept,
+                                  [&] { force_.Revert(); });
+    out.iterations = newton_.stats().iterations;
+    out.stats = newton_.stats();
+    return out;
+  }
+
+ private:
+  friend class NewtonDriver;
+
+  // R(x) = K x + r(x) - lambda f into residual_, and the size of the terms it balances.
+  bool EvaluateAt(const Eigen::VectorXd& x) {
+    r_.setZero();
+    tangent_.Clear();
+    if (!force_.Evaluate(x, r_, tangent_)) return false;
+    if (ramped_) {
+      rs_.setZero();
+      ramped_tangent_.Clear();
+      if (!ramped_->Evaluate(x, rs_, ramped_tangent_)) return false;
+      r_ += lambda_ * rs_;
+      tangent_.band().mutable_data() += lambda_ * ramped_tangent_.band().data();
+    }
+    k_.Multiply(x, kd_);
+    residual_ = kd_ + r_ - lambda_ * *f_;
+    reference_ = kd_.norm() + r_.norm() + lambda_ * f_->norm();
+    return residual_.allFinite();
+  }
+
+  // NewtonDriver's scheme. The line search of the last Update() evaluated the iterate already.
+  bool Evaluate(NewtonResidual& out) {
+    if (stale_) {
+      evaluated_ = EvaluateAt(d_);
+      stale_ = false;
+    }
+    out.norm = residual_.norm();
+    out.reference = reference_;
+    return evaluated_;
+  }
+  bool Retreat() { return false; }
+  // kd_ serves as the bound's work vector: the next evaluation forms K d again.
+  double RoundOff() { return k_.ProductRoundOff(d_, kd_); }
+  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
+  NewtonFactor Factor(double /*shift*/) {
+    jacobian_.mutable_data() = k_.data() + tangent_.band().data();
+    NewtonFactor out;
+    out.status = factor_.Compute(jacobian_, tangent_.rank_one_scale(), tangent_.rank_one_vector());
+    if (out.status == Status::kOk) {
+      step_ = -residual_;
+      factor_.SolveInPlace(step_);
+    }
+    return out;
+  }
+  double MassTerm() const { return 0.0; }
+  // Backtracks along the correction while the residual does not fall, and takes the last trial
+  // after max_line_search halvings whatever it gives.
+  NewtonCorrection Update() {
+    const double norm = residual_.norm();
+    double alpha = 1.0;
+    for (int cut = 0;; ++cut) {
+      trial_ = d_ + alpha * step_;
+      evaluated_ = EvaluateAt(trial_);
+      if ((evaluated_ && residual_.norm() < (1.0 - 1e-4 * alpha) * norm) ||
+          cut == options_.max_line_search) {
+        break;
+      }
+      alpha *= 0.5;
+    }
+    d_ = trial_;
+    NewtonCorrection out;
+    if (!residual_.allFinite()) out.status = Status::kNonFinite;
+    out.size = alpha * step_.norm();
+    out.iterate = d_.norm();
+    return out;
+  }
+  // Converged for the force's present state; a force that changes it there starts Newton afresh.
+  bool Settle() {
+    if (force_.Settle(d_)) return true;
+    stale_ = true;
+    return false;
+  }
+  Status Finish() { return Status::kOk; }
+
+  const SymmetricBandMatrix& k_;
+  NonlinearForce& force_;
+  NonlinearForce* ramped_;
+  const NonlinearStaticOptions& options_;
+  NewtonDriver newton_;
+  ForceTangent tangent_, ramped_tangent_;
+  SymmetricBandMatrix jacobian_;
+  BandRankOneCholesky factor_;
+  const Eigen::VectorXd* f_ = nullptr;
+  Eigen::VectorXd rs_, d_, r_, residual_, step_, trial_, kd_;
+  double lambda_ = 0.0, reference_ = 0.0;
+  bool stale_ = true, evaluated_ = false;
+};
+
 template <int Dim>
 NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, NonlinearForce& force,
                                              const LoadCase& loads,
                                              const NonlinearStaticOptions& options = {},
                                              NonlinearForce* ramped = nullptr) {
-  const int n = model.FreeDofCount();
-  const SymmetricBandMatrix& k = model.Stiffness();
-  const Eigen::VectorXd f = AssembleLoads(model, loads);
-  NonlinearStaticSolution out;
-  out.displacement = Eigen::VectorXd::Zero(n);
-  if (options.start.size() == n) out.displacement = options.start;
-  ForceTangent tangent(n, k.bandwidth());
-  ForceTangent ramped_tangent(n, k.bandwidth());
-  Eigen::VectorXd rs = Eigen::VectorXd::Zero(n);
-  SymmetricBandMatrix jacobian(n, k.bandwidth());
-  BandRankOneCholesky factor;
-  Eigen::VectorXd d(n), r(n), residual(n), step(n), trial(n), kd(n);
-
-  // R(d) = K d + r(d) - lambda f, and the size of the terms it balances.
-  auto evaluate = [&](const Eigen::VectorXd& x, double lambda, double& reference) {
-    r.setZero();
-    tangent.Clear();
-    if (!force.Evaluate(x, r, tangent)) return false;
-    if (ramped) {
-      rs.setZero();
-      ramped_tangent.Clear();
-      if (!ramped->Evaluate(x, rs, ramped_tangent)) return false;
-      r += lambda * rs;
-      tangent.band().mutable_data() += lambda * ramped_tangent.band().data();
-    }
-    k.Multiply(x, kd);
-    residual = kd + r - lambda * f;
-    reference = kd.norm() + r.norm() + lambda * f.norm();
-    return residual.allFinite();
-  };
-
-  auto newton = [&](double lambda) {
-    double reference = 0.0;
-    if (!evaluate(d, lambda, reference)) return Status::kNonFinite;
-    int settles = 0;
-    double previous = std::numeric_limits<double>::infinity();
-    for (int iteration = 1; iteration <= options.newton.max_iterations; ++iteration) {
-      ++out.iterations;
-      // kd serves as the bound's work vector: the next evaluation forms K d again.
-      const double norm = residual.norm();
-      bool converged = norm <= options.newton.residual_tolerance * reference ||
-                       NewtonOptions::StalledAtRoundOff(norm, previous,
-                                                        [&] { return k.ProductRoundOff(d, kd); });
-      previous = norm;
-      if (!converged) {
-        jacobian.mutable_data() = k.data() + tangent.band().data();
-        const Status factored =
-            factor.Compute(jacobian, tangent.rank_one_scale(), tangent.rank_one_vector());
-        if (factored != Status::kOk) return factored;
-        step = -residual;
-        factor.SolveInPlace(step);
-        double alpha = 1.0;
-        for (int cut = 0;; ++cut) {
-          trial = d + alpha * step;
-          if ((evaluate(trial, lambda, reference) &&
-               residual.norm() < (1.0 - 1e-4 * alpha) * norm) ||
-              cut == options.max_line_search) {
-            break;
-          }
-          alpha *= 0.5;
-        }
-        d = trial;
-        if (!residual.allFinite()) return Status::kNonFinite;
-        converged = alpha * step.norm() <= options.newton.increment_tolerance * d.norm();
-      }
-      if (!converged) continue;
-      // Converged for the force's present state; a force that changes it there starts Newton
-      // afresh.
-      if (force.Settle(d)) return Status::kOk;
-      if (++settles > options.newton.max_settles) return Status::kNotConverged;
-      iteration = 0;
-      previous = std::numeric_limits<double>::infinity();
-      if (!evaluate(d, lambda, reference)) return Status::kNonFinite;
-    }
-    return Status::kNotConverged;
-  };
-
-  double lambda = 0.0;
-  double increment = 1.0;
-  out.status = Status::kOk;
-  while (lambda < 1.0) {
-    const double target = std::min(1.0, lambda + increment);
-    d = out.displacement;
-    const Status status = newton(target);
-    if (status == Status::kOk) {
-      force.Commit(d);
-      out.displacement = d;
-      lambda = target;
-      ++out.load_steps;
-      increment = std::min(2.0 * increment, 1.0 - lambda);
-    } else {
-      force.Revert();
-      increment *= 0.5;
-      if (increment < options.min_load_step) {
-        out.status = status;
-        break;
-      }
-    }
-  }
-  out.load_factor = lambda;
-  return out;
+  NonlinearStaticSolve<Dim> solve(model, force, options, ramped);
+  return solve.Solve(AssembleLoads(model, loads));
 }
 
 }  // namespace cosmems

@@ -8,11 +8,13 @@
 #include "cosmems/analysis/fold_search.hpp"
 #include "cosmems/analysis/output_point.hpp"
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
 
@@ -70,42 +72,13 @@ class FoldPath {
   Status Solve(double s, double& lambda, double& slope) {
     d_ = accepted_ + (s - s_) * rate_;
     lambda_ = accepted_lambda_ + (s - s_) * accepted_slope_;
-    const double target = -s * gap_;
-    double previous = std::numeric_limits<double>::infinity();
-    for (int iteration = 0;; ++iteration) {
-      double reference = 0.0;
-      if (!Evaluate(reference)) return Status::kNonFinite;
-      const double c = control_.Evaluate(d_) - target;
-      // a_ serves as the bound's work vector: the Newton step below overwrites it.
-      const double norm = residual_.norm();
-      const bool converged =
-          (norm <= newton_.residual_tolerance * reference ||
-           NewtonOptions::StalledAtRoundOff(
-               norm, previous, [&] { return model_.Stiffness().ProductRoundOff(d_, a_); })) &&
-          std::abs(c) <= newton_.residual_tolerance * gap_;
-      previous = norm;
-      const Status factored = Factor();
-      // Only a solved state that is not definite lies past the stable path; an iterate on the
-      // way there that is not tells nothing of it.
-      if (factored != Status::kOk) return converged ? factored : Status::kNotConverged;
-      b_ = r1_;
-      factor_.SolveInPlace(b_);
-      const double eb = control_.Evaluate(b_);
-      if (converged) {
-        trial_slope_ = gap_ / eb;
-        lambda = lambda_;
-        slope = trial_slope_;
-        trial_s_ = s;
-        return Status::kOk;
-      }
-      if (iteration == newton_.max_iterations) return Status::kNotConverged;
-      ++iterations_;
-      a_ = -residual_;
-      factor_.SolveInPlace(a_);
-      const double dlambda = (control_.Evaluate(a_) + c) / eb;
-      d_ += a_ - dlambda * b_;
-      lambda_ += dlambda;
-    }
+    target_ = -s * gap_;
+    const Status status = newton_.Solve(*this, std::numeric_limits<double>::quiet_NaN());
+    if (status != Status::kOk) return status;
+    lambda = lambda_;
+    slope = trial_slope_;
+    trial_s_ = s;
+    return Status::kOk;
   }
 
   void Accept() {
@@ -117,11 +90,15 @@ class FoldPath {
   }
 
   const Eigen::VectorXd& accepted() const { return accepted_; }
-  int iterations() const { return iterations_; }
+  /// What the solves along the path cost.
+  const NewtonStats& stats() const { return newton_.stats(); }
 
  private:
-  // R = K d + r(d) + lambda r_1(d) and both tangents; false outside a force's domain.
-  bool Evaluate(double& reference) {
+  friend class NewtonDriver;
+
+  // NewtonDriver's scheme on the bordered system. R = K d + r(d) + lambda r_1(d) and both
+  // tangents; false outside a force's domain. The travel held is the side condition.
+  bool Evaluate(NewtonResidual& out) {
     r_.setZero();
     r1_.setZero();
     other_tangent_.Clear();
@@ -130,15 +107,59 @@ class FoldPath {
     if (!pulling_.Evaluate(d_, r1_, pulling_tangent_)) return false;
     model_.Stiffness().Multiply(d_, kd_);
     residual_ = kd_ + r_ + lambda_ * r1_;
-    reference = kd_.norm() + r_.norm() + std::abs(lambda_) * r1_.norm();
-    return residual_.allFinite();
+    if (!residual_.allFinite()) return false;
+    c_ = control_.Evaluate(d_) - target_;
+    out.norm = residual_.norm();
+    out.reference = kd_.norm() + r_.norm() + std::abs(lambda_) * r1_.norm();
+    out.side_conditions_met = std::abs(c_) <= newton_.options().residual_tolerance * gap_;
+    return true;
   }
+  bool Retreat() { return false; }
+  // a_ serves as the bound's work vector: the Newton step overwrites it.
+  double RoundOff() { return model_.Stiffness().ProductRoundOff(d_, a_); }
+  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
 
-  Status Factor() {
+  // J = K + dr/dd + lambda dr_1/dd, factored; b solves J b = r_1.
+  Status FactorAndSolveLoad() {
     jacobian_.mutable_data() = model_.Stiffness().data() + other_tangent_.band().data() +
                                lambda_ * pulling_tangent_.band().data();
-    return factor_.Compute(jacobian_, other_tangent_.rank_one_scale(),
-                           other_tangent_.rank_one_vector());
+    const Status status = factor_.Compute(jacobian_, other_tangent_.rank_one_scale(),
+                                          other_tangent_.rank_one_vector());
+    if (status != Status::kOk) return status;
+    b_ = r1_;
+    factor_.SolveInPlace(b_);
+    eb_ = control_.Evaluate(b_);
+    return Status::kOk;
+  }
+  // Only a solved state that is not definite lies past the stable path; an iterate on the way
+  // there that is not tells nothing of it.
+  NewtonFactor Factor(double /*shift*/) {
+    NewtonFactor out;
+    if (FactorAndSolveLoad() != Status::kOk) {
+      out.status = Status::kNotConverged;
+      return out;
+    }
+    a_ = -residual_;
+    factor_.SolveInPlace(a_);
+    return out;
+  }
+  double MassTerm() const { return 0.0; }
+  // d lambda = (e^T a + c) / e^T b; no increment test (the bordered system converges on both
+  // of its residuals).
+  NewtonCorrection Update() {
+    const double dlambda = (control_.Evaluate(a_) + c_) / eb_;
+    d_ += a_ - dlambda * b_;
+    lambda_ += dlambda;
+    return {};
+  }
+  bool Settle() { return true; }
+  // The converged state's slope d lambda / ds = gap / e^T b; a state not definite is past the
+  // fold.
+  Status Finish() {
+    const Status status = FactorAndSolveLoad();
+    if (status != Status::kOk) return status;
+    trial_slope_ = gap_ / eb_;
+    return Status::kOk;
   }
 
   const BeamModel<Dim>& model_;
@@ -146,14 +167,14 @@ class FoldPath {
   NonlinearForce* other_;
   OutputPoint control_;
   double gap_;  ///< m, as the control point measures deflections
-  NewtonOptions newton_;
+  NewtonDriver newton_;
   ForceTangent other_tangent_, pulling_tangent_;
   SymmetricBandMatrix jacobian_;
   BandRankOneCholesky factor_;
   Eigen::VectorXd d_, accepted_, rate_, kd_, r_, r1_, residual_, a_, b_;
   double lambda_ = 0.0, accepted_lambda_ = 0.0, accepted_slope_ = 0.0, trial_slope_ = 0.0;
   double s_ = 0.0, trial_s_ = 0.0;
-  int iterations_ = 0;
+  double target_ = 0.0, c_ = 0.0, eb_ = 0.0;  ///< the travel held, its residual, e^T b
 };
 
 /// The fold of a FoldPath: its pressure's largest scale before the beam snaps onto the substrate,
@@ -169,7 +190,7 @@ PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const Pul
   out.status = fold.status;
   out.instability = fold.instability;
   out.solves = fold.solves;
-  out.iterations = path.iterations();
+  out.iterations = path.stats().iterations;
   out.displacement = path.accepted();
   if (fold.status != Status::kOk) return out;
   out.voltage_v = std::sqrt(fold.load);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/analysis/output_point.hpp"
 #include "cosmems/analysis/transient_options.hpp"

@@ -4,7 +4,7 @@
 #include <memory>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/force_sum.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/haptics/haptic_frame.hpp"
 #include "cosmems/haptics/local_model.hpp"
 #include "cosmems/haptics/probe_contact.hpp"

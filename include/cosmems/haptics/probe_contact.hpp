@@ -9,7 +9,7 @@
 
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/hermite_shapes.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/validation.hpp"
 
 namespace cosmems {

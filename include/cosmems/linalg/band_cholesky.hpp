@@ -13,9 +13,9 @@ namespace cosmems {
 
 /// Cholesky factorisation of a symmetric positive definite band matrix in its square-root-free
 /// form A = L D L^T (L unit lower), in the band's own storage: O(n b^2) to factor and O(n b) to
-/// solve, against O(n^3) and O(n^2) dense. Without square roots the factor is also the solves'
-/// form as it stands: 1.3 us against 2.6 us for the former L L^T with its pivots folded in
-/// afterwards, on the planar 40-element bridge (117 unknowns, bandwidth 3), solves unchanged.
+/// solve, against O(n^3) and O(n^2) dense. Square-root-free, the factor comes out in the form
+/// the solves use, with no later pass to fold an L L^T factor's pivots in, and it factors faster
+/// for that (doc/speed.md, "Kernel choices").
 ///
 /// Eigen's idiom: Compute(), info(), Solve(). A pivot that falls below a relative threshold of
 /// its diagonal entry means the matrix is singular to working precision (a beam that is not

@@ -13,10 +13,10 @@ namespace cosmems::internal {
 
 /// y += alpha A x for a symmetric band matrix, column by column: column j gives y_j its dot
 /// product with x_j ... x_(j+W) and adds A(j+k, j) x_j to the W sums still open below it, which
-/// ride along in registers. Each stored entry is loaded once (a row by row product loads the
-/// lower triangle's entries across columns, strided): 156 ns against 258 ns row by row for
-/// W = 3 and 117 unknowns (the 40-element planar bridge), 7.3 us against 8.0 us for W = 11 and
-/// 1200. With kAdd false it stores y = alpha A x instead, y needing no zeroing beforehand.
+/// ride along in registers. Each stored entry is loaded once, where a row by row product loads
+/// the lower triangle's entries across columns, strided; it is the faster of the two
+/// (doc/speed.md, "Kernel choices"). With kAdd false it stores y = alpha A x instead, y needing
+/// no zeroing beforehand.
 template <int W, bool kAdd = true>
 void SymmetricBandMultiplyAdd(const double* __restrict a, int stride, int n,
                               const double* __restrict x, double alpha, double* __restrict y) {
@@ -134,8 +134,8 @@ int BandLdlFactor(const double* __restrict a, int stride, int n, double floor,
 }
 
 /// BandLdlSolve for two right-hand sides at once. The sweeps are bound by the latency of one
-/// row after another, so the second system rides in the gaps of the first: 482 ns against 418 ns
-/// for one on the planar 40-element bridge (117 unknowns, bandwidth 3), instead of twice that.
+/// row after another, so the second system rides in the gaps of the first and costs far less
+/// than a second solve (doc/speed.md, "Kernel choices").
 template <int W>
 void BandLdlSolve2(const double* __restrict unit, int stride, const double* __restrict inverse,
                    int n, double* __restrict b, double* __restrict c) {

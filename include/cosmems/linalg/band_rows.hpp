@@ -10,10 +10,9 @@ namespace cosmems {
 
 /// A symmetric band matrix expanded to full rows, A(i, i-W) ... A(i, i+W) contiguous and zero
 /// outside the matrix, for the products of a time step. Against a vector padded with W zeros at
-/// both ends, row i's product is one fixed-length contiguous dot product, which vectorises:
-/// 115 ns against 199 ns for the symmetric band storage on the planar 20-element cantilever
-/// when that was multiplied row by row; its product by columns has since caught up (90 ns
-/// against 92 ns, measured together).
+/// both ends, row i's product is one fixed-length contiguous dot product, which vectorises. It
+/// beat the band storage's row-by-row product; that storage's product by columns
+/// (SymmetricBandMatrix) has since caught up (doc/speed.md, "Kernel choices").
 class BandRows {
  public:
   BandRows() = default;

@@ -22,13 +22,11 @@ enum class SpdSolverKind {
 /// measurement, not by type. Compute() once; SolveInPlace() allocates nothing.
 class SpdSolver {
  public:
-  /// The measured fastest per Newmark step (bench/linear_step_bench, README): the band
-  /// factorisation, except for bands wider than 5 of at most 24 unknowns. A beam numbered field
-  /// by field (BeamModel's default) has a band of 3 and the band won at every size (3-D,
-  /// 2 elements: 116 ns against CHOLMOD's 145). Numbered node by node, a spatial frame has a
-  /// band of 11 that is mostly zeros, which CHOLMOD's ordering skips: there it won up to 4
-  /// elements (182 vs 274 ns) and lost from 5 on (571 vs 509 ns). Dense LLT was slower at every
-  /// size (planar, 1 element: 76 vs 53 ns).
+  /// The fastest per Newmark step as measured: the band factorisation, except for bands wider
+  /// than 5 of at most 24 unknowns, that is small spatial frames numbered node by node, whose band
+  /// of 11 is mostly zeros that CHOLMOD's ordering skips. A beam numbered field by field
+  /// (BeamModel's default) has a band of 3, and there the band wins at every size; dense LLT
+  /// never wins. The figures: doc/speed.md, "Kernel choices".
   static SpdSolverKind Choose(const SymmetricBandMatrix& a) {
     return a.bandwidth() > 5 && a.size() <= 24 ? SpdSolverKind::kCholmod : SpdSolverKind::kBand;
   }

@@ -20,15 +20,10 @@ namespace cosmems {
 /// S_(i+1) = K_(i+1),(i+1) - G_i K_(i+1),i^T, keeping S_i^-1 and G_i. S_i^-1 comes from its 3 x 3
 /// blocks by cofactors (no square root, two divisions), and S_(i+1) from 6 x 3 pieces of that
 /// elimination (see EliminateNode) in fixed-size products, which vectorise. Its pivots (those
-/// of S_i's LDL^T) are checked as BandCholesky checks its own. On the reference cantilever's
-/// matrix at 50 elements (-O3, SSE2, medians on a shared 2-core machine) it factors in 5.0 us
-/// and solves in 1.1 us, against 16 us and 2.3 us for BandCholesky on the same matrix in band
-/// storage (bandwidth 11, supported rows removed): cosserat_bench, BM_NewtonIterationParts
-/// (whose factorisation case also copies the matrix, about 1.6 us) and
-/// BM_BandCholeskyOfTheRodMatrix. The same elimination in 6 x 6 blocks (S_i^-1 and G_i first,
-/// then G_i K_(i+1),i^T) took 5.9 us. An in-place 6 x 6 LDL^T of each S_i factored in 5.1 us
-/// but, solving by substitution through L_i (two dependent chains a node), made the solve
-/// 3.7 us; keeping L_i^-1 as well, 5.9 us and 2.5 us.
+/// of S_i's LDL^T) are checked as BandCholesky checks its own. On the rod's matrix it factors and
+/// solves about three and two times faster than BandCholesky on the same matrix in band storage,
+/// and faster than the block variants it replaced (doc/speed.md, "Kernel choices";
+/// cosserat_bench).
 ///
 /// The non-symmetric addition carries the load stiffness of follower loads at the last node
 /// (the rod's free end): eliminating the chain in node order leaves that block for the end, so
@@ -211,7 +206,7 @@ class BlockTridiagonalSystem {
   // complement is formed from these 6 x 3 pieces rather than as G K^T: (K1 A^-1) K1^T needs
   // only A^-1, and the rest waits for T^-1 alone, not for S^-1 and G, which the solve needs but
   // the next node does not. That shortens the chain of dependent operations from node to node,
-  // which sets the pace here: 5.0 us against 5.9 us for the reference cantilever's matrix.
+  // which sets the pace here (doc/speed.md).
   Status EliminateNode(int i, Block& s) {
     const BlockVector reference = diagonal_[i].diagonal();
     Eigen::Matrix3d a_inverse, t_inverse;

@@ -229,8 +229,7 @@ inline void CosseratElement::Gradient(const Eigen::Vector3d& du, const Eigen::Qu
 inline void CosseratElement::Hessian(const Kinematics& k, Tangent& tangent) const {
   // Plain doubles throughout: Eigen's packet code for 3-vectors and 3 x 3 matrices (a packet
   // and a scalar tail, SSE2) costs more in shuffles and store-forwarding stalls than it saves
-  // here. The algebra below took 130 ns per element written with Eigen expressions and takes
-  // 95 ns this way (the product form it replaces, 150 ns; -O3, timed alone in a loop).
+  // here (doc/speed.md, "Kernel choices").
   using internal::Cross3;
   using internal::Dot3;
   double n[3], m[3], nu[3], d[3];
@@ -297,9 +296,8 @@ inline void CosseratElement::Hessian(const Kinematics& k, Tangent& tangent) cons
   //   K(theta_a, theta_a) = H - Delta,  K(theta_b, theta_b) = H + Delta,
   //   K(theta_b, theta_a) = (W_s + T W_s T)/4 - R + (A - A^T)/4 + [t (c x nu)/8 - S m/2]x,
   //   H = (W_s - T W_s T)/4 + R,  Delta = (A + A^T)/4 + t (sym(nu c^T) - (c . nu) I)/4,
-  // with R = S C_m S / h - sym(B_t) + sym(E T)/2 (symmetric). Forming U, W - U and their
-  // products with (I -+ T) instead, the reference cantilever's tangent at 50 elements took
-  // 9.1 us; this takes 6.1 us (cosserat_bench, BM_NewtonIterationParts/1, median).
+  // with R = S C_m S / h - sym(B_t) + sym(E T)/2 (symmetric). These closed forms need fewer
+  // products than forming U, W - U and their products with (I -+ T) (doc/speed.md).
   double f[3][3], cm[3][3];  // F and C_m / h in spatial components: R_m diag(.) R_m^T / h
   {
     const Eigen::Matrix3d& r = k.rotation;

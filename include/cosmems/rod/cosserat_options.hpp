@@ -1,7 +1,6 @@
 #pragma once
 
 #include "cosmems/core/validation.hpp"
-#include "cosmems/time/newton_options.hpp"
 
 namespace cosmems {
 
@@ -38,26 +37,5 @@ struct CosseratOptions {
     RequireWithin("cosserat.kirchhoff_factor", kirchhoff_factor, 1.0, 1e8);
   }
 };
-
-/// Newton's defaults for rods: NewtonOptions with a residual tolerance of 1e-9 instead of 1e-10.
-/// A strain formed from nodal positions carries a round-off floor in the residual, of order
-/// EA eps |u| / h: measured 1e-11 to 3e-11 of the reference size for the reference cantilever
-/// (50 and 200 elements, PL^2/EI from 0.01 to 2), and the Kirchhoff factor higher in that limit.
-/// 1e-10 would sit within a factor 3 of it and cost a haptic re-solve a third iteration (the
-/// increment test ends the iterations at the floor either way). A residual of 1e-9 of the loads
-/// is a deflection error of order 1e-9 L.
-inline NewtonOptions RodNewtonOptions() {
-  NewtonOptions options;
-  options.residual_tolerance = 1e-9;
-  return options;
-}
-
-/// Throws std::invalid_argument naming the field and value when a NewtonOptions is not usable.
-inline void ValidateNewtonOptions(const NewtonOptions& options) {
-  RequirePositive("newton.residual_tolerance", options.residual_tolerance);
-  RequirePositive("newton.increment_tolerance", options.increment_tolerance);
-  RequireWithin("newton.max_iterations", options.max_iterations, 1, 1000);
-  RequireWithin("newton.max_cuts", options.max_cuts, 0, 50);
-}
 
 }  // namespace cosmems

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/beam/stretching_force.hpp"
-#include "cosmems/core/force_sum.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/surface/gap_force.hpp"

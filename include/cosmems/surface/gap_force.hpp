@@ -4,7 +4,7 @@
 #include <array>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/surface/gap_integral.hpp"
 
 namespace cosmems {

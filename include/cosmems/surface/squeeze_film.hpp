@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/surface/gap_integral.hpp"
 

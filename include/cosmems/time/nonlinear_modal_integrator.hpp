@@ -9,13 +9,14 @@
 #include <vector>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/mode_step.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
-#include "cosmems/time/newton_safeguards.hpp"
+#include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
 
@@ -42,10 +43,10 @@ namespace cosmems {
 /// (NonlinearForce::ProjectMotion) from v = Phi q', and q' is fitted back in the M_0 norm; both
 /// projections are orthogonal in the mass metric, so neither adds kinetic energy.
 ///
-/// Newton follows the Newmark path's protocol: the force's Settle() after convergence, Revert()
-/// after a failure, a mass term raised where J turns indefinite (a Casimir or electrostatic
-/// snap), an iterate outside the force's domain pulled back, and a failed step cut into halves up
-/// to NewtonOptions::max_cuts deep.
+/// Newton follows NewtonDriver's protocol, as the Newmark path does: the force's Settle() after
+/// convergence, Revert() after a failure, J's factor kept while it serves, a mass term raised
+/// where J turns indefinite (a Casimir or electrostatic snap), an iterate outside the force's
+/// domain pulled back, and a failed step cut into halves up to NewtonOptions::max_cuts deep.
 ///
 /// G and J are dense (n x n, n the free unknowns): the set-up forms G^-1 for the step and each
 /// cut of it (max_cuts + 1 inversions, n^3 each), and an iteration that factors J pays n^3 / 6
@@ -65,7 +66,7 @@ class NonlinearModalIntegrator {
         modal_loads_(modal.shapes.transpose() * patterns),
         residual_loads_(modal.ResidualFlexibility(model, patterns)),
         dt_(time_step),
-        options_(options),
+        newton_((ValidateNewtonOptions(options), options)),
         tangent_(model.FreeDofCount(), model.Mass(0).bandwidth()) {
     RequirePositive("time_step", time_step);
     if (force.HasViscousPart()) {
@@ -80,7 +81,7 @@ class NonlinearModalIntegrator {
     fit_ = modal.Fit(model);
     flexibility_ = modal.ResidualFlexibility(model, Eigen::MatrixXd::Identity(n, n));
     // The step's map and stiffness for the step and each of its cuts.
-    for (int depth = 0; depth <= options_.max_cuts; ++depth) {
+    for (int depth = 0; depth <= options.max_cuts; ++depth) {
       const double h = std::ldexp(dt_, -depth);
       Level level;
       level.held.resize(k);
@@ -124,7 +125,7 @@ class NonlinearModalIntegrator {
     d_ = d0;
     s_ = s0;
     time_ = 0.0;
-    factor_depth_ = -1;
+    newton_.ForgetFactor();
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
@@ -143,7 +144,7 @@ class NonlinearModalIntegrator {
   [[nodiscard]] Status Step(const Eigen::VectorXd& s_next) {
     if (setup_status_ != Status::kOk) return setup_status_;
     s_target_ = &s_next;
-    last_iterations_ = last_cuts_ = last_factorizations_ = 0;
+    newton_.stats() = {};
     time_save_ = time_;
     auto substep = [this](double a, double b, int level) { return Substep(a, b, level); };
     auto save = [this] {
@@ -152,12 +153,10 @@ class NonlinearModalIntegrator {
       d_save_ = d_;
       correction_save_ = correction_;
     };
-    // A failed part of the step is retried as two halves (the state at the step's start saved).
-    const Status status =
-        AdvanceInHalves(0.0, 1.0, 0, options_.max_cuts, force_, last_cuts_, substep, save);
+    const Status status = newton_.AdvanceInHalves(substep, save, [this] { force_.Revert(); });
     if (status == Status::kOk) {
       s_ = s_next;
-    } else if (last_cuts_ > 0) {  // a cut step may have got part of the way: return to its start
+    } else if (newton_.stats().cuts > 0) {  // a cut step may have got part of the way: back
       q_ = q_save_;
       qdot_ = qdot_save_;
       d_ = d_save_;
@@ -175,13 +174,12 @@ class NonlinearModalIntegrator {
   const Eigen::VectorXd& modal_displacement() const { return q_; }
   const Eigen::VectorXd& modal_velocity() const { return qdot_; }
   double time() const { return time_; }
-  /// Newton iterations of the last step (all sub-steps), how many of them factored J, and how
-  /// many times the step was cut.
-  int last_iterations() const { return last_iterations_; }
-  int last_factorizations() const { return last_factorizations_; }
-  int last_cuts() const { return last_cuts_; }
+  /// What the last step cost (all its sub-steps).
+  const NewtonStats& last_stats() const { return newton_.stats(); }
 
  private:
+  friend class NewtonDriver;
+
   // The modes' maps over a step of dt / 2^depth and that step's stiffness G^-1.
   struct Level {
     std::vector<ModeStep> steps;
@@ -215,84 +213,67 @@ class NonlinearModalIntegrator {
     y_free_.noalias() = stiffness * d_free_;
     d_new_ = d_free_ + correction_;  // the force holds the beam where it held it last
     const double h = (to - from) * dt_;
-    const double cm = 2.0 / (h * h);  // a mode's stiffness over the step per unit modal mass
-    const int n = static_cast<int>(d_.size());
-    double previous_norm = 0.0;
-    int settles = 0;
-    for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
-      if (settles > options_.max_settles) break;
-      ++last_iterations_;
-      // Pulled back into the force's domain along the last increment, which residual_ holds.
-      if (!EvaluateWithinDomain(force_, iteration == 1, d_new_, residual_, r_, tangent_, [] {})) {
-        return Status::kNonFinite;
-      }
-      // R = G^-1 d - G^-1 d_free + r, and the sizes of its terms.
-      work_.noalias() = stiffness * d_new_;
-      residual_ = work_ - y_free_ + r_;
-      const double norm = residual_.norm();
-      if (!std::isfinite(norm)) return Status::kNonFinite;
-      const double tolerance =
-          options_.residual_tolerance * (work_.norm() + y_free_.norm() + r_.norm());
-      if (iteration > 1) factor_contraction_ = norm / previous_norm;
-      const bool converged =
-          norm <= tolerance ||
-          (iteration > 1 && NewtonOptions::StalledAtRoundOff(norm, previous_norm,
-                                                             [&] { return RoundOff(stiffness); }));
-      if (converged) {
-        if (Settled(iteration, settles)) return Accept(level, from, to);
-        continue;
-      }
-      previous_norm = norm;
-      // J's factor is kept, as on the Newmark path (NewtonOptions::reuse_contraction), while its
-      // last solve cut the residual that much and, past a step's first iteration, another such
-      // cut would end the step; the residual is exact either way. A contact's tangent changes
-      // only when its state does (Settle), and a factorisation costs more than an iteration.
-      const bool keep = factor_depth_ == depth &&
-                        factor_contraction_ <= options_.reuse_contraction &&
-                        (iteration == 1 || factor_contraction_ * norm <= tolerance);
-      bool shifted = false;
-      if (keep) {
-        const auto lower = jacobian_.triangularView<Eigen::Lower>();
-        lower.solveInPlace(residual_);
-        lower.adjoint().solveInPlace(residual_);
-      } else {
-        factor_depth_ = -1;
-        ++last_factorizations_;
-        Status solved = Solve(stiffness, 0.0);
-        for (double shift = cm / 64.0;
-             solved == Status::kNotPositiveDefinite && shift <= kMaxMassShift * cm; shift *= 4.0) {
-          ++last_factorizations_;
-          solved = Solve(stiffness, shift);
-          shifted = solved == Status::kOk;
-        }
-        if (solved != Status::kOk) return solved;
-        if (!shifted) factor_depth_ = depth;  // a shifted factor is never kept
-      }
-      double increment2 = 0.0, displacement2 = 0.0;
-      for (int i = 0; i < n; ++i) {
-        d_new_[i] -= residual_[i];
-        increment2 += residual_[i] * residual_[i];
-        displacement2 += d_new_[i] * d_new_[i];
-      }
-      // A shifted solve moves less than Newton would: its small increment proves nothing.
-      if (!shifted &&
-          std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
-          Settled(iteration, settles)) {
-        return Accept(level, from, to);
-      }
-    }
-    return Status::kNotConverged;
+    mass_term_ = 2.0 / (h * h);  // a mode's stiffness over the step per unit modal mass
+    level_ = &level;
+    from_ = from;
+    to_ = to;
+    // The factor serves the sub-steps of one length: the key is h.
+    return newton_.Solve(*this, h);
   }
 
-  // Newton has converged for the force's present state: true if the force keeps it there;
-  // otherwise (a contact multiplier updated, a node peeled off) Newton starts afresh.
-  bool Settled(int& iteration, int& settles) {
-    if (force_.Settle(d_new_)) return true;
-    ++settles;
-    iteration = 0;
-    factor_depth_ = -1;  // the tangent changed with the state
-    return false;
+  // NewtonDriver's scheme: R = G^-1 d - G^-1 d_free + r, and the sizes of its terms.
+  bool Evaluate(NewtonResidual& out) {
+    r_.setZero();
+    tangent_.Clear();
+    if (!force_.Evaluate(d_new_, r_, tangent_)) return false;
+    work_.noalias() = level_->stiffness * d_new_;
+    residual_ = work_ - y_free_ + r_;
+    out.norm = residual_.norm();
+    out.reference = work_.norm() + y_free_.norm() + r_.norm();
+    return true;
   }
+
+  // Back along the last correction, which residual_ still holds (d = previous - correction).
+  bool Retreat() {
+    residual_ *= 0.5;
+    d_new_ += residual_;
+    return true;
+  }
+
+  Status SolveKept() {
+    const auto lower = jacobian_.triangularView<Eigen::Lower>();
+    lower.solveInPlace(residual_);
+    lower.adjoint().solveInPlace(residual_);
+    return Status::kOk;
+  }
+
+  NewtonFactor Factor(double shift) {
+    NewtonFactor out;
+    out.status = Solve(level_->stiffness, shift);
+    out.reusable = true;
+    return out;
+  }
+
+  double MassTerm() const { return mass_term_; }
+
+  NewtonCorrection Update() {
+    double increment2 = 0.0, displacement2 = 0.0;
+    for (Eigen::Index i = 0; i < d_new_.size(); ++i) {
+      d_new_[i] -= residual_[i];
+      increment2 += residual_[i] * residual_[i];
+      displacement2 += d_new_[i] * d_new_[i];
+    }
+    NewtonCorrection out;
+    out.size = std::sqrt(increment2);
+    out.iterate = std::sqrt(displacement2);
+    return out;
+  }
+
+  bool Settle() { return force_.Settle(d_new_); }
+
+  double RoundOff() { return RoundOff(level_->stiffness); }
+
+  Status Finish() { return Accept(*level_, from_, to_); }
 
   // Solves (G^-1 + dr/dd + shift M_0) delta = R in place in residual_. With a shift the mass
   // term is that of a shorter step, as in the Newmark path: the iteration creeps the way a
@@ -316,10 +297,6 @@ class NonlinearModalIntegrator {
     llt.solveInPlace(residual_);
     return Status::kOk;
   }
-
-  // The largest mass shift, as a multiple of the step's own mass term: that of a step 2^-10 as
-  // long, the depth of cutting it replaces (as in the Newmark path).
-  static constexpr double kMaxMassShift = 1048576.0;
 
   // The rounding error of G^-1 d, whose entries each sum n products (Higham 3.5); scratch_ holds
   // |G^-1| |d|.
@@ -365,17 +342,15 @@ class NonlinearModalIntegrator {
   Eigen::MatrixXd mass_;            ///< M_0, n x n
   Eigen::MatrixXd fit_;             ///< (Phi^T M_0 Phi)^-1 Phi^T M_0, k x n
   double dt_;
-  NewtonOptions options_;
+  NewtonDriver newton_;
   std::vector<Level> levels_;
   Status setup_status_ = Status::kOk;
   ForceTangent tangent_;
   Eigen::MatrixXd jacobian_;
   double time_ = 0.0, time_save_ = 0.0;
-  int last_iterations_ = 0, last_cuts_ = 0, last_factorizations_ = 0;
-  // The depth of the step J's factor in jacobian_ was made for (-1: none), and
-  // ||R_new|| / ||R|| of its last solve.
-  int factor_depth_ = -1;
-  double factor_contraction_ = 1.0;
+  // The sub-step being solved: its level, its fraction of the step and J's mass term.
+  const Level* level_ = nullptr;
+  double from_ = 0.0, to_ = 0.0, mass_term_ = 0.0;
   const Eigen::VectorXd* s_target_ = nullptr;
   Eigen::VectorXd s_, s_from_, s_to_;
   Eigen::VectorXd d_, velocity_, scratch_, d_new_, d_free_, y_free_, r_, residual_, work_,

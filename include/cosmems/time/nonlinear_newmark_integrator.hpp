@@ -3,17 +3,19 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
-#include "cosmems/time/newton_safeguards.hpp"
+#include "cosmems/time/newton_stats.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
 
 namespace cosmems {
@@ -34,31 +36,16 @@ namespace cosmems {
 /// that fails, the state is left at the start of the step and the status says why. Steps
 /// allocate nothing. Implicit members only (beta > 0).
 ///
-/// Why a step is made the way it is, measured on the stretching microbridge of
-/// bench/stretching_step_bench.cpp (planar, 40 elements, 117 unknowns, dt = T1/20 after a sudden
-/// midspan load), where the first version took 29-32 us and 5.7 iterations a step:
-/// - The predictor. Extrapolating with the old acceleration, d_n + h v_n + h^2/2 a_n, left the
-///   first two corrections useless (residual still 0.99 of its scale, corrections 12 times the
-///   displacement): the sudden load rings every mode, and the ones above what the step resolves,
-///   which average acceleration leaves undamped, reverse their acceleration every step. Without
-///   the a_n term (d_n + h v_n, or d_n) Newton takes 4.0 iterations, but resolved motion then
-///   loses the Taylor predictor's accuracy: the same bridge swinging in its first mode at
-///   dt = T1/400 took 2.8 iterations a step instead of 2.0. So the a_n term is weighted by the
-///   share of a_n that persisted over the last step, fitted by least squares (Accept()): 4.0 and
-///   2.3 iterations (plain Newton). Residuals then fall as 1, 1e-2, 1e-7, 1e-12 of their scale,
-///   quadratically, with the round-off floor near 1e-13: the tolerances were never at fault.
-///   Extrapolations from the last two or three steps measured no better.
-/// - The factorisation, 2.7 of the 5.5 us an iteration took: the tangent barely moves once a
-///   step is near its solution, or from the end of one step to the start of the next, so its
-///   band part's factor is kept while it keeps working (NewtonOptions::reuse_contraction, and
-///   below), and only the rank-one part is renewed each iteration (one more back-solve, made
-///   together with the system's): 1.14 factorisations a step instead of 3, for 4.06 iterations
-///   instead of 4.0 (the bridge swinging at dt = T1/400: 0.03 factorisations, 3.0 iterations).
-/// - The kernels: the factorisation as L D L^T (1.3 us instead of 2.6), the band products by
-///   columns (157 ns instead of 258) and the two back-solves together (0.48 us instead of 0.84).
-/// A step now takes about 7.5 us: 2.0 in 12 band products (M, K and the force's G_0, 4 times),
-/// 1.4 in the factorisation, 1.3 in the back-solves, 1.4 in this class's vector passes and 0.5
-/// in the rest of the force.
+/// Newton follows NewtonDriver's protocol. Two choices make a step cheap:
+/// - The predictor d_n + h v_n + theta h^2/2 a_n weights the old acceleration by the share of it
+///   that persisted over the last step (fitted by least squares in Finish()): after a sudden load
+///   the modes above what the step resolves reverse their acceleration every step, and the full
+///   Taylor term would leave the first corrections useless, while resolved motion keeps its
+///   accuracy.
+/// - The band part of the tangent's factor is kept while it keeps working (the tangent barely
+///   moves near a step's solution and from one step to the next), and only the rank-one part is
+///   renewed each iteration, solved together with the system.
+/// doc/speed.md has the measurements behind both (bench/stretching_step_bench.cpp).
 class NonlinearNewmarkIntegrator {
  public:
   NonlinearNewmarkIntegrator(const SymmetricBandMatrix& mass, const SymmetricBandMatrix& stiffness,
@@ -71,14 +58,10 @@ class NonlinearNewmarkIntegrator {
         force_(force),
         p_(parameters),
         dt_(time_step),
-        options_(options),
+        newton_((ValidateNewtonOptions(options), options)),
         tangent_(mass.size(), mass.bandwidth()),
         jacobian_(mass.size(), mass.bandwidth()) {
     RequirePositive("time_step", time_step);
-    if (!(options.reuse_contraction >= 0.0 && options.reuse_contraction < 1.0)) {
-      throw std::invalid_argument("reuse_contraction = " + FormatValue(options.reuse_contraction) +
-                                  ": must lie in [0, 1)");
-    }
     if (p_.IsExplicit()) {
       throw std::invalid_argument(
           "beta = 0: the nonlinear path needs an implicit member (beta > 0)");
@@ -102,7 +85,7 @@ class NonlinearNewmarkIntegrator {
     f_ = f0;
     time_ = 0.0;
     persistence_ = 1.0;
-    factor_valid_ = false;
+    newton_.ForgetFactor();
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_) ||
@@ -117,7 +100,7 @@ class NonlinearNewmarkIntegrator {
   /// Advances by dt to the load f_next. On failure the state stays at the step's start.
   [[nodiscard]] Status Step(const Eigen::VectorXd& f_next) {
     f_target_ = &f_next;
-    last_iterations_ = last_cuts_ = last_factorizations_ = 0;
+    newton_.stats() = {};
     time_save_ = time_;
     auto substep = [this](double a, double b, int) { return Substep(a, b); };
     auto save = [this] {
@@ -126,12 +109,10 @@ class NonlinearNewmarkIntegrator {
       a_save_ = a_;
       r_save_ = r_start_;
     };
-    // A failed part of the step is retried as two halves (the state at the step's start saved).
-    const Status status =
-        AdvanceInHalves(0.0, 1.0, 0, options_.max_cuts, force_, last_cuts_, substep, save);
+    const Status status = newton_.AdvanceInHalves(substep, save, [this] { force_.Revert(); });
     if (status == Status::kOk) {
       f_ = f_next;
-    } else if (last_cuts_ > 0) {  // a cut step may have got part of the way: return to its start
+    } else if (newton_.stats().cuts > 0) {  // a cut step may have got part of the way: back
       d_ = d_save_;
       v_ = v_save_;
       a_ = a_save_;
@@ -146,208 +127,162 @@ class NonlinearNewmarkIntegrator {
   const Eigen::VectorXd& velocity() const { return v_; }
   const Eigen::VectorXd& acceleration() const { return a_; }
   double time() const { return time_; }
-  /// Newton iterations of the last step (all sub-steps), how many of them factored the tangent,
-  /// and how many times the step was cut.
-  int last_iterations() const { return last_iterations_; }
-  int last_factorizations() const { return last_factorizations_; }
-  int last_cuts() const { return last_cuts_; }
+  /// What the last step cost (all its sub-steps).
+  const NewtonStats& last_stats() const { return newton_.stats(); }
 
  private:
+  friend class NewtonDriver;
+
   // One generalised-alpha step over [from, to] of the step, the load interpolated linearly.
   Status Substep(double from, double to) {
-    const double h = (to - from) * dt_;
+    h_ = (to - from) * dt_;
+    const double h = h_;
     const double am = p_.alpha_m, af = p_.alpha_f, beta = p_.beta, gamma = p_.gamma;
-    const double ca = 1.0 / (beta * h * h);
+    ca_ = 1.0 / (beta * h * h);
     // Newmark's relations as a_(n+1) = ca (d_(n+1) - d*), v_(n+1) = v* + gamma h a_(n+1).
     d_star_ = d_ + h * v_ + ((0.5 - beta) * h * h) * a_;
     v_star_ = v_ + ((1.0 - gamma) * h) * a_;
     // The load at t_(n+1-af) of this sub-step, interpolated linearly within the step.
     const double s = (1.0 - af) * to + af * from;
     f_mid_ = (1.0 - s) * f_ + s * *f_target_;
-    const double f_norm = f_mid_.norm();
-    const bool damped = damping_.mass != 0.0 || damping_.stiffness != 0.0;
+    f_norm_ = f_mid_.norm();
     // J = cm M + ck K + ct dr/dd (the damping C = dm M + dk K folded in).
-    const double cm = (1.0 - am) * ca + (1.0 - af) * gamma / (beta * h) * damping_.mass;
-    const double ck = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
-    const double ct = 1.0 - af;
-    const bool viscous = force_.HasViscousPart();
+    cm_ = (1.0 - am) * ca_ + (1.0 - af) * gamma / (beta * h) * damping_.mass;
+    ck_ = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
+    ct_ = 1.0 - af;
     // Predictor d_(n+1) = d_n + h v_n + persistence h^2/2 a_n (see the class comment).
     d_new_ = d_ + h * v_ + (persistence_ * 0.5 * h * h) * a_;
-    a_new_ = ca * (d_new_ - d_star_);
+    a_new_ = ca_ * (d_new_ - d_star_);
+    // The factor serves the sub-steps of one length: the key is h.
+    return newton_.Solve(*this, h);
+  }
+
+  // NewtonDriver's scheme: R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for
+  // the scale, with d_(n+1) the unknown.
+  bool Evaluate(NewtonResidual& out) {
+    const double am = p_.alpha_m, af = p_.alpha_f, gamma = p_.gamma, h = h_;
+    r_.setZero();
+    tangent_.Clear();
+    if (!force_.Evaluate(d_new_, r_, tangent_)) return false;
+    // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
+    if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
+    const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
+    if (force_.HasViscousPart()) {
+      v_new_ = v_star_ + (gamma * h) * a_new_;
+      if (!force_.EvaluateViscous(d_new_, v_new_, gamma / (p_.beta * h), r_, tangent_)) {
+        out.norm = std::numeric_limits<double>::quiet_NaN();  // non-finite, not a retreat
+        return true;
+      }
+    }
+    if (am != 0.0) {
+      work_ = (1.0 - am) * a_new_ + am * a_;
+      mass_.Multiply(work_, residual_);
+    } else {
+      mass_.Multiply(a_new_, residual_);
+    }
+    const bool damped = damping_.mass != 0.0 || damping_.stiffness != 0.0;
+    double reference = damped ? residual_.norm() : 0.0;
+    if (damped) {  // C v_mid = dm M v_mid + dk K v_mid
+      v_mid_ = (1.0 - af) * (v_star_ + (gamma * h) * a_new_) + af * v_;
+      if (damping_.mass != 0.0) {
+        mass_.Multiply(v_mid_, work_);
+        residual_ += damping_.mass * work_;
+        reference += damping_.mass * work_.norm();
+      }
+      if (damping_.stiffness != 0.0) {
+        stiffness_.Multiply(v_mid_, work_);
+        residual_ += damping_.stiffness * work_;
+        reference += damping_.stiffness * work_.norm();
+      }
+    }
+    stiffness_.Multiply(d_mid, work_);
+    // R += K d_mid + r - f_mid and the sizes of the terms, in one pass over the vectors.
+    double mass2 = 0.0, stiffness2 = 0.0, force2 = 0.0, norm2 = 0.0;
     const int n = static_cast<int>(d_.size());
-    double previous_norm = 0.0;
-    int settles = 0;
-    // Newton has converged for the force's present state: true if the force keeps it there;
-    // otherwise (a contact multiplier updated, a node peeled off) Newton starts afresh.
-    auto settled = [&](int& iteration) {
-      if (force_.Settle(d_new_)) return true;
-      ++settles;
-      iteration = 0;
-      factor_valid_ = false;  // the tangent changed with the state
-      return false;
-    };
-    for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
-      if (settles > options_.max_settles) break;
-      ++last_iterations_;
-      // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
-      if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
-      const Eigen::VectorXd& d_mid = af != 0.0 ? d_mid_ : d_new_;
-      // Pulled back into the force's domain along the last increment, which residual_ holds.
-      if (!EvaluateWithinDomain(force_, iteration == 1, d_new_, residual_, r_, tangent_,
-                                [&] { a_new_ = ca * (d_new_ - d_star_); })) {
-        return Status::kNonFinite;
-      }
-      if (viscous) {
-        v_new_ = v_star_ + (gamma * h) * a_new_;
-        if (!force_.EvaluateViscous(d_new_, v_new_, gamma / (beta * h), r_, tangent_)) {
-          return Status::kNonFinite;
-        }
-      }
-      // R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for the scale.
-      if (am != 0.0) {
-        work_ = (1.0 - am) * a_new_ + am * a_;
-        mass_.Multiply(work_, residual_);
-      } else {
-        mass_.Multiply(a_new_, residual_);
-      }
-      double reference = damped ? residual_.norm() : 0.0;
-      if (damped) {  // C v_mid = dm M v_mid + dk K v_mid
-        v_mid_ = (1.0 - af) * (v_star_ + (gamma * h) * a_new_) + af * v_;
-        if (damping_.mass != 0.0) {
-          mass_.Multiply(v_mid_, work_);
-          residual_ += damping_.mass * work_;
-          reference += damping_.mass * work_.norm();
-        }
-        if (damping_.stiffness != 0.0) {
-          stiffness_.Multiply(v_mid_, work_);
-          residual_ += damping_.stiffness * work_;
-          reference += damping_.stiffness * work_.norm();
-        }
-      }
-      stiffness_.Multiply(d_mid, work_);
-      // R += K d_mid + r - f_mid and the sizes of the terms, in one pass over the vectors.
-      double mass2 = 0.0, stiffness2 = 0.0, force2 = 0.0, norm2 = 0.0;
-      for (int i = 0; i < n; ++i) {
-        const double m = residual_[i], k = work_[i];
-        const double r = af != 0.0 ? (1.0 - af) * r_[i] + af * r_start_[i] : r_[i];
-        const double sum = m + k + r - f_mid_[i];
-        mass2 += m * m;  // M a_(n+1-am) alone unless damping was added to it above
-        stiffness2 += k * k;
-        force2 += r * r;
-        norm2 += sum * sum;
-        residual_[i] = sum;
-      }
-      reference +=
-          (damped ? 0.0 : std::sqrt(mass2)) + std::sqrt(stiffness2) + std::sqrt(force2) + f_norm;
-      const double norm = std::sqrt(norm2);
-      // A finite norm means finite entries (a NaN or infinity would carry into it).
-      if (!std::isfinite(norm) && !residual_.allFinite()) return Status::kNonFinite;
-      // How much the factor's last solve cut the residual decides whether it serves again.
-      if (iteration > 1) factor_contraction_ = norm / previous_norm;
-      const double tolerance = options_.residual_tolerance * reference;
-      if (norm <= tolerance ||
-          (iteration > 1 && NewtonOptions::StalledAtRoundOff(norm, previous_norm,
-                                                             [&] { return RoundOff(d_mid); }))) {
-        if (settled(iteration)) return Accept(h);
-        continue;
-      }
-      previous_norm = norm;
-      // The band part's factor is kept (for the same coefficients: a cut step changes h) while
-      // its last solve cut the residual by reuse_contraction, and past the first iteration only
-      // if a solve that cuts as much again ends the step: a kept factor contracts about as much
-      // as its last solve did, where a fresh one converges quadratically, and an iteration
-      // (residual and solve, 1.7 us on the bridge) costs more than a factorisation (1.3 us).
-      // The first iteration starts next to d_n, where the last step's factor was made, so that
-      // factor serves it about as well as a new one would.
-      const bool keep = factor_valid_ && cm == factor_cm_ && ck == factor_ck_ && ct == factor_ct_ &&
-                        factor_contraction_ <= options_.reuse_contraction &&
-                        (iteration == 1 || factor_contraction_ * norm <= tolerance);
-      // J delta = R, the rank-one part of the tangent always fresh.
-      const double scale = ct * tangent_.rank_one_scale();
-      const Eigen::VectorXd& u = tangent_.rank_one_vector();
-      bool shifted = false;
-      if (keep) {
-        // A kept band may not carry the fresh rank-one part: then iterate again from this
-        // d_(n+1), whose unchanged residual has the tangent refactored.
-        if (factor_.SetRankOneAndSolve(scale, u, residual_) != Status::kOk) continue;
-      } else {
-        jacobian_.mutable_data() =
-            cm * mass_.data() + ck * stiffness_.data() + ct * tangent_.band().data();
-        ++last_factorizations_;
-        factor_valid_ = factor_.ComputeBand(jacobian_) == Status::kOk;
-        Status solved = Status::kOk;
-        if (factor_valid_) {
-          factor_cm_ = cm;
-          factor_ck_ = ck;
-          factor_ct_ = ct;
-          solved = factor_.SetRankOneAndSolve(scale, u, residual_);
-        } else {  // the band alone is not definite: the whole tangent may be (not kept)
-          solved = factor_.ComputeWithIndefiniteBand(jacobian_, scale, u);
-          if (solved == Status::kOk) factor_.SolveInPlace(residual_);
-        }
-        if (solved == Status::kNotPositiveDefinite) {
-          solved = SolveShifted(cm, ck, ct, scale, u);
-          shifted = solved == Status::kOk;
-        }
-        if (solved != Status::kOk) return solved;
-      }
-      // d_(n+1) -= delta, a_(n+1) with it, and the sizes of both for the increment test.
-      double increment2 = 0.0, displacement2 = 0.0;
-      for (int i = 0; i < n; ++i) {
-        const double delta = residual_[i];
-        const double d = d_new_[i] - delta;
-        increment2 += delta * delta;
-        displacement2 += d * d;
-        d_new_[i] = d;
-        a_new_[i] = ca * (d - d_star_[i]);
-      }
-      // A shifted solve moves less than Newton would: its small increment proves nothing.
-      if (!shifted &&
-          std::sqrt(increment2) <= options_.increment_tolerance * std::sqrt(displacement2) &&
-          settled(iteration)) {
-        return Accept(h);
-      }
+    for (int i = 0; i < n; ++i) {
+      const double m = residual_[i], k = work_[i];
+      const double r = af != 0.0 ? (1.0 - af) * r_[i] + af * r_start_[i] : r_[i];
+      const double sum = m + k + r - f_mid_[i];
+      mass2 += m * m;  // M a_(n+1-am) alone unless damping was added to it above
+      stiffness2 += k * k;
+      force2 += r * r;
+      norm2 += sum * sum;
+      residual_[i] = sum;
     }
-    return Status::kNotConverged;
+    out.reference = reference + (damped ? 0.0 : std::sqrt(mass2)) + std::sqrt(stiffness2) +
+                    std::sqrt(force2) + f_norm_;
+    out.norm = std::sqrt(norm2);
+    return true;
   }
 
-  // Solves J delta = R with the mass term of J raised until J is definite, where J itself is
-  // not: inside a snap (the Casimir or electrostatic force overtaking the beam's stiffness near
-  // the substrate) the step's matrix with little mass in it turns indefinite. The raised mass
-  // is that of a shorter step, so the iteration creeps the way a shorter step would, but it
-  // solves this step's equations, whose solution exists where contact catches the beam; the step
-  // is cut only if that fails. Never kept for a later iteration.
-  Status SolveShifted(double cm, double ck, double ct, double scale, const Eigen::VectorXd& u) {
-    factor_valid_ = false;
-    for (double shift = cm / 64.0; shift <= kMaxMassShift * cm; shift *= 4.0) {
-      jacobian_.mutable_data() =
-          (cm + shift) * mass_.data() + ck * stiffness_.data() + ct * tangent_.band().data();
-      ++last_factorizations_;
-      if (factor_.Compute(jacobian_, scale, u) == Status::kOk) {
-        factor_.SolveInPlace(residual_);
-        return Status::kOk;
-      }
-    }
-    return Status::kNotPositiveDefinite;
+  // Back along the last correction, which residual_ still holds (d = previous - correction).
+  bool Retreat() {
+    residual_ *= 0.5;
+    d_new_ += residual_;
+    a_new_ = ca_ * (d_new_ - d_star_);
+    return true;
   }
-
-  // The largest mass shift of SolveShifted, as a multiple of the step's own mass term: that of a
-  // step 2^-10 as long, the depth of cutting it replaces.
-  static constexpr double kMaxMassShift = 1048576.0;
 
   // The rounding error of the residual's stiffness products, K d_mid and the stiffness-
   // proportional damping's K v_mid (100 elements at 100 us steps stalled at 7e-9 of the
   // reference, a sixteenth of this bound).
-  double RoundOff(const Eigen::VectorXd& d_mid) {
-    double bound = stiffness_.ProductRoundOff(d_mid, work_);
+  double RoundOff() {
+    double bound = stiffness_.ProductRoundOff(p_.alpha_f != 0.0 ? d_mid_ : d_new_, work_);
     if (damping_.stiffness != 0.0) {
       bound += damping_.stiffness * stiffness_.ProductRoundOff(v_mid_, work_);
     }
     return bound;
   }
 
+  // J delta = R with the kept band factor, the rank-one part of the tangent always fresh.
+  Status SolveKept() {
+    return factor_.SetRankOneAndSolve(ct_ * tangent_.rank_one_scale(), tangent_.rank_one_vector(),
+                                      residual_);
+  }
+
+  // J delta = R with J's mass term raised by `shift`. Without a shift the band part is factored
+  // alone (the factor the driver keeps) when it is definite; otherwise the whole tangent may be.
+  NewtonFactor Factor(double shift) {
+    const double scale = ct_ * tangent_.rank_one_scale();
+    const Eigen::VectorXd& u = tangent_.rank_one_vector();
+    jacobian_.mutable_data() =
+        (cm_ + shift) * mass_.data() + ck_ * stiffness_.data() + ct_ * tangent_.band().data();
+    NewtonFactor out;
+    if (shift == 0.0 && factor_.ComputeBand(jacobian_) == Status::kOk) {
+      out.reusable = true;
+      out.status = factor_.SetRankOneAndSolve(scale, u, residual_);
+      return out;
+    }
+    out.status = shift == 0.0 ? factor_.ComputeWithIndefiniteBand(jacobian_, scale, u)
+                              : factor_.Compute(jacobian_, scale, u);
+    if (out.status == Status::kOk) factor_.SolveInPlace(residual_);
+    return out;
+  }
+
+  double MassTerm() const { return cm_; }
+
+  // d_(n+1) -= delta, a_(n+1) with it, and the sizes of both for the increment test.
+  NewtonCorrection Update() {
+    double increment2 = 0.0, displacement2 = 0.0;
+    for (int i = 0; i < d_new_.size(); ++i) {
+      const double delta = residual_[i];
+      const double d = d_new_[i] - delta;
+      increment2 += delta * delta;
+      displacement2 += d * d;
+      d_new_[i] = d;
+      a_new_[i] = ca_ * (d - d_star_[i]);
+    }
+    NewtonCorrection out;
+    out.size = std::sqrt(increment2);
+    out.iterate = std::sqrt(displacement2);
+    return out;
+  }
+
+  bool Settle() { return force_.Settle(d_new_); }
+
   // Takes d_new_ and a_new_ (consistent with it) as the state at the end of the sub-step.
-  Status Accept(double h) {
+  Status Finish() {
+    const double h = h_;
     // The share of a_n that persisted over the step, for the next predictor: the least-squares
     // theta of d_(n+1) - d_n - h v_n = theta h^2/2 a_n, within [0, 1].
     double along = 0.0, squared = 0.0;
@@ -373,20 +308,15 @@ class NonlinearNewmarkIntegrator {
   NonlinearForce& force_;
   GeneralizedAlphaParameters p_;
   double dt_;
-  NewtonOptions options_;
+  NewtonDriver newton_;
   double time_ = 0.0;
   double time_save_ = 0.0;
   double persistence_ = 1.0;  ///< theta of the predictor, fitted to the last step
-  int last_iterations_ = 0;
-  int last_factorizations_ = 0;
-  int last_cuts_ = 0;
+  // The sub-step being solved: its length, Newmark's ca, J's coefficients and ||f_mid||.
+  double h_ = 0.0, ca_ = 0.0, cm_ = 0.0, ck_ = 0.0, ct_ = 0.0, f_norm_ = 0.0;
   ForceTangent tangent_;
   SymmetricBandMatrix jacobian_;
   BandRankOneCholesky factor_;
-  // Whether the band factor exists, its coefficients, and ||R_new|| / ||R|| of its last solve.
-  bool factor_valid_ = false;
-  double factor_contraction_ = 1.0;
-  double factor_cm_ = 0.0, factor_ck_ = 0.0, factor_ct_ = 0.0;
   const Eigen::VectorXd* f_target_ = nullptr;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
       f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;

@@ -6,6 +6,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -18,7 +19,9 @@
 #include "cosmems/rod/rod_state.hpp"
 #include "cosmems/rod/so3.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
 
@@ -65,7 +68,7 @@ class CosseratNewmarkIntegrator {
       : rod_(rod),
         p_(parameters),
         dt_(time_step / rod.units().time),
-        options_(options),
+        newton_(options),
         state_(rod.UndeformedState()),
         new_state_(state_),
         trial_state_(state_),
@@ -129,8 +132,11 @@ class CosseratNewmarkIntegrator {
     saved_state_ = state_;
     motion_save_.CopyFrom(motion_);
     const double time_save = time_;
-    last_iterations_ = last_cuts_ = 0;
-    const Status status = Advance(0.0, 1.0, 0);
+    newton_.stats() = {};
+    // A failed part of the step is cut in halves; the state at its start is saved above and no
+    // force has a state to revert.
+    const Status status = newton_.AdvanceInHalves(
+        [this](double from, double to, int) { return Substep(to - from, to); }, [] {}, [] {});
     if (status == Status::kOk) {
       std::swap(start_loads_, target_loads_);
     } else {
@@ -163,20 +169,11 @@ class CosseratNewmarkIntegrator {
   double StrainEnergy() const {
     return rod_.StrainEnergy(state_) * rod_.units().force * rod_.units().length;
   }
-  /// Newton iterations of the last step (all sub-steps), and how many times it was cut.
-  int last_iterations() const { return last_iterations_; }
-  int last_cuts() const { return last_cuts_; }
+  /// What the last step cost (all its sub-steps).
+  const NewtonStats& last_stats() const { return newton_.stats(); }
 
  private:
-  // Advances the fraction [from, to] of the current step, cutting it in halves on failure.
-  Status Advance(double from, double to, int depth) {
-    const Status status = Substep(to - from, to);
-    if (status == Status::kOk || depth >= options_.max_cuts) return status;
-    ++last_cuts_;
-    const double mid = 0.5 * (from + to);
-    const Status first = Advance(from, mid, depth + 1);
-    return first == Status::kOk ? Advance(mid, to, depth + 1) : first;
-  }
+  friend class NewtonDriver;
 
   // One Newmark step of `fraction` dt ending at the fraction `to` of the step.
   Status Substep(double fraction, double to) {
@@ -193,28 +190,44 @@ class CosseratNewmarkIntegrator {
       increment_.segment<3>(6 * i + 3) = state_.Rotation(i) * (h * motion_.w.col(i));
     }
     rod_.Retract(state_, increment_, 1.0, new_state_, correction_);
-    const NewtonOptions& o = options_;
-    for (int iteration = 0;; ++iteration) {
-      const double reference = Evaluate(h, true);
-      const double norm = residual_.norm();
-      if (!std::isfinite(norm)) return Status::kNonFinite;
-      if (norm <= o.residual_tolerance * reference) return Accept(h, false);
-      if (iteration == o.max_iterations) return Status::kNotConverged;
-      ++last_iterations_;
-      AssembleMatrix(h);
-      const Status factored = system_.Factorize();
-      if (factored != Status::kOk) return factored;
-      increment_ = -residual_;
-      system_.SolveInPlace(increment_);
-      // The update that moves each chord with its element's rotation (see CosseratRod::Retract):
-      // the axial stiffness outweighs the inertia in this matrix by far (EA/h against
-      // rho A h / (beta dt^2): 6e6 against 250 for the reference cantilever at 50 elements and
-      // dt = T1/100), so the stretch of a plain update would cost iterations here too.
-      std::swap(new_state_, trial_state_);
-      rod_.Retract(trial_state_, increment_, 1.0, new_state_, correction_);
-      if (increment_.norm() <= o.increment_tolerance * new_state_.Size()) return Accept(h, true);
-    }
+    h_ = h;
+    return newton_.Solve(*this, std::numeric_limits<double>::quiet_NaN());
   }
+
+  // NewtonDriver's scheme, on the state at t_(n+1).
+  bool Evaluate(NewtonResidual& out) {
+    out.reference = Evaluate(h_, true);
+    out.norm = residual_.norm();
+    kinematics_stale_ = false;
+    return true;
+  }
+  bool Retreat() { return false; }
+  double RoundOff() { return 0.0; }                     // converged on residual or increment
+  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
+  NewtonFactor Factor(double /*shift*/) {
+    AssembleMatrix(h_);
+    NewtonFactor out;
+    out.status = system_.Factorize();
+    if (out.status != Status::kOk) return out;
+    increment_ = -residual_;
+    system_.SolveInPlace(increment_);
+    return out;
+  }
+  double MassTerm() const { return 0.0; }
+  // The update that moves each chord with its element's rotation (see CosseratRod::Retract):
+  // the axial stiffness outweighs the inertia in this matrix by far (EA/h against
+  // rho A h / (beta dt^2)), so the stretch of a plain update would cost iterations here too.
+  NewtonCorrection Update() {
+    std::swap(new_state_, trial_state_);
+    rod_.Retract(trial_state_, increment_, 1.0, new_state_, correction_);
+    kinematics_stale_ = true;
+    NewtonCorrection out;
+    out.size = increment_.norm();
+    out.iterate = new_state_.Size();
+    return out;
+  }
+  bool Settle() { return true; }
+  Status Finish() { return Accept(h_, kinematics_stale_); }
 
   // The coefficients of the step of length h.
   struct Coefficients {
@@ -307,10 +320,10 @@ class CosseratNewmarkIntegrator {
   const CosseratRod& rod_;
   GeneralizedAlphaParameters p_;
   double dt_;  // internal units
-  NewtonOptions options_;
+  NewtonDriver newton_;
   double time_ = 0.0;
-  int last_iterations_ = 0;
-  int last_cuts_ = 0;
+  double h_ = 0.0;                 // the sub-step being solved
+  bool kinematics_stale_ = false;  // new_state_ moved since its kinematics were formed
   RodState state_, new_state_, trial_state_, saved_state_;
   // Per node, 3 x nodes: velocity, pseudo- and true acceleration (spatial), angular velocity,
   // pseudo- and true angular acceleration (material).

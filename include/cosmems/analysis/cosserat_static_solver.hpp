@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -14,7 +15,9 @@
 #include "cosmems/rod/cosserat_rod.hpp"
 #include "cosmems/rod/rod_loads.hpp"
 #include "cosmems/rod/rod_state.hpp"
+#include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
 
@@ -72,7 +75,8 @@ class CosseratStaticSolver {
         start_(state_),
         system_(rod.MakeSystem()),
         correction_(3, rod.NodeCount()),
-        kinematics_(rod.MakeKinematics()) {
+        kinematics_(rod.MakeKinematics()),
+        newton_(options.newton) {
     for (RodLoads* loads : {&converged_loads_, &start_loads_, &target_loads_, &loads_}) {
       *loads = RodLoads::None(rod.NodeCount());
     }
@@ -89,29 +93,25 @@ class CosseratStaticSolver {
     rod_.ToInternal(loads, target_loads_);
     start_loads_ = converged_loads_;
     start_ = state_;
-    last_iterations_ = last_load_steps_ = last_cuts_ = 0;
-    const double smallest = std::ldexp(options_.first_load_step, -options_.newton.max_cuts);
-    double factor = 0.0;
-    double step = options_.first_load_step;
-    while (factor < 1.0) {
-      const double next = std::min(1.0, factor + step);
-      RodLoads::Interpolate(start_loads_, target_loads_, next, loads_);
+    newton_.stats() = {};
+    last_load_steps_ = 0;
+    auto attempt = [this](double factor) {
+      RodLoads::Interpolate(start_loads_, target_loads_, factor, loads_);
       saved_ = state_;
-      const Status status = Newton();
-      if (status == Status::kOk) {
-        factor = next;
-        ++last_load_steps_;
-        step *= 2.0;
-        continue;
-      }
+      start_of_solve_ = true;
+      return newton_.Solve(*this, std::numeric_limits<double>::quiet_NaN());
+    };
+    auto reject = [this] {
       std::swap(state_, saved_);
       internal_valid_ = false;
-      ++last_cuts_;
-      step *= 0.5;
-      if (step < smallest) {
-        state_ = start_;
-        return status;
-      }
+    };
+    double reached = 0.0;
+    const Status status = newton_.RampLoad(
+        options_.first_load_step, std::ldexp(options_.first_load_step, -options_.newton.max_cuts),
+        reached, attempt, [this] { ++last_load_steps_; }, reject);
+    if (status != Status::kOk) {
+      state_ = start_;
+      return status;
     }
     converged_loads_ = target_loads_;
     return Status::kOk;
@@ -127,58 +127,78 @@ class CosseratStaticSolver {
   const CosseratRod& rod() const { return rod_; }
   /// The current equilibrium (internal units; see CosseratRod for outputs in SI).
   const RodState& state() const { return state_; }
-  /// Newton iterations (linear solves), load steps and load-step halvings of the last Solve().
-  int last_iterations() const { return last_iterations_; }
+  /// What the last Solve() cost (its load-step halvings as cuts), and its load steps.
+  const NewtonStats& last_stats() const { return newton_.stats(); }
   int last_load_steps() const { return last_load_steps_; }
-  int last_cuts() const { return last_cuts_; }
 
  private:
-  // Newton iterations at loads_ from state_.
-  Status Newton() {
-    if (!internal_valid_) EvaluateInternal(state_);
-    double reference = ApplyLoads(state_);
-    bool factored = false;
-    const NewtonOptions& o = options_.newton;
-    for (int iteration = 0;; ++iteration) {
-      const double norm = residual_.norm();
-      if (!std::isfinite(norm)) return Status::kNonFinite;
-      if (norm <= o.residual_tolerance * reference) return Status::kOk;
-      if (iteration == o.max_iterations) return Status::kNotConverged;
-      ++last_iterations_;
-      if (!factored) {
-        const Status status = Factorize();
-        if (status != Status::kOk) return status;
-      }
-      increment_ = -residual_;
-      system_.SolveInPlace(increment_);
-      if (increment_.norm() <= o.increment_tolerance * state_.Size()) {
-        rod_.Retract(state_, increment_, 1.0, trial_, correction_);
-        std::swap(state_, trial_);
-        internal_valid_ = false;
-        return Status::kOk;
-      }
-      double step = 1.0;
-      for (int halving = 0;; ++halving) {
-        rod_.Retract(state_, increment_, step, trial_, correction_);
-        EvaluateInternal(trial_);
-        reference = ApplyLoads(trial_);
-        const double trial_norm = residual_.norm();
-        Status status = std::isfinite(trial_norm) ? Status::kOk : Status::kNonFinite;
-        factored = false;
-        if (status == Status::kOk && trial_norm > o.residual_tolerance * reference) {
-          status = Factorize();  // kept for the next iteration when the step is taken
-          factored = status == Status::kOk;
-        }
-        if (status == Status::kOk) break;
-        if (halving == options_.max_line_search) {
-          internal_valid_ = false;  // the caches hold the rejected trial
-          return status;
-        }
-        step *= 0.5;
-      }
-      std::swap(state_, trial_);
+  friend class NewtonDriver;
+
+  // NewtonDriver's scheme at loads_ from state_. A line search's trial leaves the residual and
+  // the factor at the next iterate.
+  bool Evaluate(NewtonResidual& out) {
+    if (start_of_solve_) {
+      if (!internal_valid_) EvaluateInternal(state_);
+      reference_ = ApplyLoads(state_);
+      factored_ = false;
+      start_of_solve_ = false;
     }
+    out.norm = residual_.norm();
+    out.reference = reference_;
+    return true;
   }
+  bool Retreat() { return false; }
+  double RoundOff() { return 0.0; }  // converged on the residual or the increment alone
+  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
+  NewtonFactor Factor(double /*shift*/) {
+    NewtonFactor out;
+    out.fresh = !factored_;
+    if (!factored_) out.status = Factorize();
+    if (out.status != Status::kOk) return out;
+    increment_ = -residual_;
+    system_.SolveInPlace(increment_);
+    return out;
+  }
+  double MassTerm() const { return 0.0; }
+  // A negligible correction is taken whole and ends the solve. Otherwise it is halved while the
+  // tangent at the trial state is not positive definite or anything there is not finite (see
+  // the class comment); the trial's factorisation serves the next iteration.
+  NewtonCorrection Update() {
+    NewtonCorrection out;
+    out.size = increment_.norm();
+    out.iterate = state_.Size();
+    if (out.size <= options_.newton.increment_tolerance * out.iterate) {
+      rod_.Retract(state_, increment_, 1.0, trial_, correction_);
+      std::swap(state_, trial_);
+      internal_valid_ = false;
+      return out;
+    }
+    double step = 1.0;
+    for (int halving = 0;; ++halving) {
+      rod_.Retract(state_, increment_, step, trial_, correction_);
+      EvaluateInternal(trial_);
+      reference_ = ApplyLoads(trial_);
+      const double trial_norm = residual_.norm();
+      Status status = std::isfinite(trial_norm) ? Status::kOk : Status::kNonFinite;
+      factored_ = false;
+      if (status == Status::kOk && trial_norm > options_.newton.residual_tolerance * reference_) {
+        status = Factorize();  // kept for the next iteration when the step is taken
+        ++out.factorizations;
+        factored_ = status == Status::kOk;
+      }
+      if (status == Status::kOk) break;
+      if (halving == options_.max_line_search) {
+        internal_valid_ = false;  // the caches hold the rejected trial
+        out.status = status;
+        return out;
+      }
+      step *= 0.5;
+    }
+    std::swap(state_, trial_);
+    return out;
+  }
+  bool Settle() { return true; }
+  Status Finish() { return Status::kOk; }
 
   // Internal forces at `s`, kept while the state does not change; the tangent follows on demand.
   void EvaluateInternal(const RodState& s) {
@@ -215,11 +235,13 @@ class CosseratStaticSolver {
   Eigen::Matrix3Xd correction_;  // workspace of CosseratRod::Retract
   double internal_size_ = 0.0;
   CosseratRod::ElementKinematics kinematics_;
+  NewtonDriver newton_;
+  double reference_ = 0.0;  // the size of the terms the residual balances
   bool internal_valid_ = false;
   bool tangent_valid_ = false;
-  int last_iterations_ = 0;
+  bool start_of_solve_ = true;  // the next Evaluate() starts a Newton solve at state_
+  bool factored_ = false;       // system_ holds the factor at state_ (from a line search)
   int last_load_steps_ = 0;
-  int last_cuts_ = 0;
 };
 
 }  // namespace cosmems

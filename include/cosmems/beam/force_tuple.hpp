@@ -4,7 +4,7 @@
 #include <tuple>
 #include <utility>
 
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 
 namespace cosmems {
 

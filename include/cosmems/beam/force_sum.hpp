@@ -3,7 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "cosmems/core/nonlinear_force.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
 
 namespace cosmems {
 

@@ -1,0 +1,241 @@
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "cosmems/core/status.hpp"
+#include "cosmems/time/newton_options.hpp"
+#include "cosmems/time/newton_stats.hpp"
+
+namespace cosmems {
+
+/// The size of a residual, of the terms it balances, and whether the side conditions of a
+/// bordered system (a pull-in path's imposed travel) hold.
+struct NewtonResidual {
+  double norm = 0.0;
+  double reference = 0.0;
+  bool side_conditions_met = true;
+};
+
+/// A Newton matrix factored and the correction solved with it: `reusable` lets the driver keep
+/// the factor for later iterations and steps; `fresh` is false where the scheme had the factor
+/// already (a line search made it at the iterate).
+struct NewtonFactor {
+  Status status = Status::kOk;
+  bool reusable = false;
+  bool fresh = true;
+};
+
+/// A correction applied: its size against the iterate's (the increment test), and the
+/// factorisations a line search made on the way.
+struct NewtonCorrection {
+  Status status = Status::kOk;
+  double size = std::numeric_limits<double>::infinity();
+  double iterate = 0.0;
+  int factorizations = 0;
+};
+
+/// The Newton protocol every nonlinear solve of the library follows: the generalised-alpha step
+/// on the full model, the modal step with the held force, the Cosserat rod's step on the rotation
+/// group, and the static, pull-in and rod equilibria. A scheme supplies its residual, matrix,
+/// solve and update; the driver owns what happens between them and counts it (stats()):
+///
+/// - Convergence: ||R|| <= residual_tolerance * reference, or a residual stalled at the rounding
+///   of its products (NewtonOptions::StalledAtRoundOff), or a correction below
+///   increment_tolerance of the iterate; then the scheme's forces may change their state
+///   (Settle: a contact multiplier updated, a node peeled off), and Newton starts afresh.
+/// - The iterate outside a force's domain (a gap closed under a 1/gap^n pressure) is pulled back
+///   along its last correction, halving it up to 10 times (the first iterate has none).
+/// - The factor of the Newton matrix is kept, for the same matrix family (`key`, a step's
+///   length), while its last solve cut the residual by NewtonOptions::reuse_contraction and,
+///   past a solve's first iteration, another such cut would end it: a kept factor contracts
+///   about as much as its last solve did, where a fresh one converges quadratically, and an
+///   iteration costs more than a factorisation on a beam. The residual is exact either way.
+/// - A matrix that is not definite (inside a Casimir or electrostatic snap) is factored again
+///   with its mass term raised, up to that of a step 2^-10 as long: the iteration creeps the way
+///   a shorter step would but solves this step's equations. A raised factor is never kept, and
+///   its small correction proves nothing.
+/// - A time step that fails is retried as two halves, recursively (AdvanceInHalves); a load step
+///   that fails is halved from the last converged state (RampLoad).
+///
+/// A scheme provides:
+///   bool Evaluate(NewtonResidual&)  residual and matrix at the iterate; false outside the domain
+///   bool Retreat()                  iterate moved back by half its last correction; false: none
+///   double RoundOff()               the residual's rounding bound (0: no stall test)
+///   Status SolveKept()              the correction with the kept factor
+///   NewtonFactor Factor(double shift)  factors the matrix (+ shift times the mass) and solves
+///   double MassTerm()               the matrix's mass coefficient (0: nothing to raise)
+///   NewtonCorrection Update()       applies the correction
+///   bool Settle()                   the forces keep their state at the converged iterate
+///   Status Finish()                 takes the converged iterate
+/// Nothing here allocates.
+class NewtonDriver {
+ public:
+  explicit NewtonDriver(NewtonOptions options = {}) : options_(options) {}
+
+  const NewtonOptions& options() const { return options_; }
+  NewtonStats& stats() { return stats_; }
+  const NewtonStats& stats() const { return stats_; }
+  /// Forgets the kept factor (a new start, a changed matrix).
+  void ForgetFactor() { key_ = kNoFactor; }
+
+  /// Newton from the scheme's current iterate. `key` names the matrix family the kept factor
+  /// serves (NaN: never keep).
+  template <typename Scheme>
+  Status Solve(Scheme& scheme, double key) {
+    const Status status = Iterate(scheme, key);
+    if (status != Status::kOk) {
+      ++stats_.failures;
+      ForgetFactor();
+    }
+    return status;
+  }
+
+  /// Advances the fraction [0, 1] of a time step by `substep(from, to, depth)`, depth being how
+  /// many times the step was halved to get there, and retries a failed part as two halves,
+  /// recursively up to max_cuts deep. After each failure `revert()` returns the forces to their
+  /// last committed state; before the first cut `save()` keeps the state at the step's start,
+  /// which a failed part leaves alone, for the caller to return to if even the cuts fail.
+  template <typename Substep, typename Save, typename Revert>
+  Status AdvanceInHalves(Substep&& substep, Save&& save, Revert&& revert) {
+    return Halves(0.0, 1.0, 0, substep, save, revert);
+  }
+
+  /// Carries a load factor from 0 to 1: `attempt(target)` solves at the factor `target` from the
+  /// last converged state, `accept()` takes it and `reject()` returns to that state. The first
+  /// increment is `first`; one that succeeds doubles the next (up to what remains), one that
+  /// fails is halved, down to `smallest`, below which the ramp gives up with the last failure's
+  /// status. `reached` is the factor carried.
+  template <typename Attempt, typename Accept, typename Reject>
+  Status RampLoad(double first, double smallest, double& reached, Attempt&& attempt,
+                  Accept&& accept, Reject&& reject) {
+    reached = 0.0;
+    double increment = first;
+    while (reached < 1.0) {
+      const double target = std::fmin(1.0, reached + increment);
+      const Status status = attempt(target);
+      if (status == Status::kOk) {
+        accept();
+        reached = target;
+        increment = std::fmin(2.0 * increment, 1.0 - reached);
+        continue;
+      }
+      reject();
+      increment *= 0.5;
+      if (increment < smallest) return status;
+      ++stats_.cuts;
+    }
+    return Status::kOk;
+  }
+
+ private:
+  static constexpr double kNoFactor = std::numeric_limits<double>::quiet_NaN();
+  // The largest mass shift, as a multiple of the matrix's own mass term: that of a step 2^-10 as
+  // long, the depth of cutting it replaces.
+  static constexpr double kMaxMassShift = 1048576.0;
+
+  template <typename Scheme>
+  Status Iterate(Scheme& scheme, double key) {
+    double previous = 0.0;
+    int settles = 0;
+    // Newton has converged for the forces' present state: true if they keep it; otherwise Newton
+    // starts afresh (the matrix changed with the state).
+    auto settled = [&](int& iteration) {
+      if (scheme.Settle()) return true;
+      ++settles;
+      iteration = -1;
+      ForgetFactor();
+      return false;
+    };
+    // At most max_iterations evaluations, each followed by a correction unless it converged (a
+    // force's change of state starts the count afresh).
+    for (int iteration = 0; iteration < options_.max_iterations; ++iteration) {
+      if (settles > options_.max_settles) return Status::kNotConverged;
+      ++stats_.evaluations;
+      NewtonResidual r;
+      if (!EvaluateWithinDomain(scheme, iteration == 0, r)) return Status::kNonFinite;
+      if (!std::isfinite(r.norm)) return Status::kNonFinite;
+      if (iteration > 0) contraction_ = r.norm / previous;
+      const double tolerance = options_.residual_tolerance * r.reference;
+      const bool converged =
+          (r.norm <= tolerance ||
+           (iteration > 0 && NewtonOptions::StalledAtRoundOff(
+                                 r.norm, previous, [&] { return scheme.RoundOff(); }))) &&
+          r.side_conditions_met;
+      if (converged) {
+        if (settled(iteration)) return scheme.Finish();
+        continue;
+      }
+      previous = r.norm;
+      const bool keep = key_ == key && contraction_ <= options_.reuse_contraction &&
+                        (iteration == 0 || contraction_ * r.norm <= tolerance);
+      bool shifted = false;
+      if (keep) {
+        // A kept factor may not serve the fresh matrix (its rank-one part): iterate again from
+        // this iterate with a new one.
+        if (scheme.SolveKept() != Status::kOk) {
+          ForgetFactor();
+          continue;
+        }
+      } else {
+        const Status solved = FactorAndSolve(scheme, key, shifted);
+        if (solved != Status::kOk) return solved;
+      }
+      ++stats_.iterations;
+      const NewtonCorrection c = scheme.Update();
+      stats_.factorizations += c.factorizations;
+      if (c.status != Status::kOk) return c.status;
+      if (!shifted && c.size <= options_.increment_tolerance * c.iterate && settled(iteration)) {
+        return scheme.Finish();
+      }
+    }
+    return Status::kNotConverged;
+  }
+
+  // Evaluates at the iterate, pulling it back into the forces' domain along its last correction.
+  template <typename Scheme>
+  static bool EvaluateWithinDomain(Scheme& scheme, bool first, NewtonResidual& r) {
+    for (int retreat = 0;; ++retreat) {
+      if (scheme.Evaluate(r)) return true;
+      if (first || retreat == 10 || !scheme.Retreat()) return false;
+    }
+  }
+
+  // A fresh factor, its mass term raised while the matrix is not definite.
+  template <typename Scheme>
+  Status FactorAndSolve(Scheme& scheme, double key, bool& shifted) {
+    ForgetFactor();
+    NewtonFactor f = scheme.Factor(0.0);
+    if (f.fresh) ++stats_.factorizations;
+    const double mass = scheme.MassTerm();
+    for (double shift = mass / 64.0;
+         f.status == Status::kNotPositiveDefinite && mass > 0.0 && shift <= kMaxMassShift * mass;
+         shift *= 4.0) {
+      f = scheme.Factor(shift);
+      ++stats_.factorizations;
+      shifted = f.status == Status::kOk;
+    }
+    if (f.status == Status::kOk && f.reusable && !shifted) key_ = key;
+    return f.status;
+  }
+
+  template <typename Substep, typename Save, typename Revert>
+  Status Halves(double from, double to, int depth, Substep& substep, Save& save, Revert& revert) {
+    const Status status = substep(from, to, depth);
+    if (status == Status::kOk) return status;
+    revert();
+    if (depth >= options_.max_cuts) return status;
+    if (stats_.cuts == 0) save();
+    ++stats_.cuts;
+    const double mid = 0.5 * (from + to);
+    const Status first = Halves(from, mid, depth + 1, substep, save, revert);
+    return first == Status::kOk ? Halves(mid, to, depth + 1, substep, save, revert) : first;
+  }
+
+  NewtonOptions options_;
+  NewtonStats stats_;
+  double key_ = kNoFactor;    // the matrix family of the kept factor (NaN: none)
+  double contraction_ = 1.0;  // ||R_new|| / ||R|| of the kept factor's last solve
+};
+
+}  // namespace cosmems
