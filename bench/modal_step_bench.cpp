@@ -1,7 +1,7 @@
 // Per-step cost of exact modal propagation (one load pattern, uy at the tip read every step)
 // against the number of modes.
 #include "cosmems/analysis/modal_reduction.hpp"
-#include "cosmems/analysis/output_point.hpp"
+#include "cosmems/beam/output_point.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "reference_beam.hpp"
 #include "step_extremes.hpp"

@@ -17,6 +17,7 @@
 
 #include "cosmems/analysis/step_timing.hpp"
 #include "cosmems/beam/force_tuple.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
@@ -41,25 +42,24 @@ double HandForce(long tick) {
   return 0.0;
 }
 
-void BM_SurfaceTick(benchmark::State& state) {
-  const int substeps = static_cast<int>(state.range(0));
-  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
+// Contact, stiction and the Casimir pressure of the paper's scene, composed at compile time.
+using Surface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
+Surface MakeSurface(const BeamModel<2>& model) {
   ContactOptions contact;
   contact.gap = kGap;
   contact.separation = 2e-8;  // the asperities of a rough surface (see SubstrateContact)
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
-  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces(
+  return Surface(
       SubstrateContact<2>(model, contact),
       GapForce<2, CasimirPressure>(model, CasimirPressure{},
                                    GapSpan{kGap, 0.0, 200e-6}.WithSeparation(contact.separation)));
-  const double dt = 1e-3 / substeps / model.units().time;
-  NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
-                                        GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt);
-  const int n = model.FreeDofCount();
-  const int tip = model.dofs().Reduced(20, NodalDof::kUy);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
-  if (integrator.Initialize(f, f, f) != Status::kOk) state.SkipWithError("initialisation failed");
+}
+
+// Times every call of `tick` (false: it failed) and sets the median, p99 and largest, on the
+// wall clock and on the thread's CPU clock.
+template <typename Tick>
+void TimeTicks(benchmark::State& state, Tick&& tick) {
   std::vector<double> times, cpu_times;
   times.reserve(1 << 20);
   cpu_times.reserve(1 << 20);
@@ -68,32 +68,50 @@ void BM_SurfaceTick(benchmark::State& state) {
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return static_cast<double>(t.tv_sec) * 1e6 + static_cast<double>(t.tv_nsec) * 1e-3;
   };
-  long tick = 0;
   for (auto _ : state) {
-    f[tip] = HandForce(++tick) / model.units().force;
     const double cpu_start = cpu_now_us();
     const auto start = std::chrono::steady_clock::now();
-    for (int i = 0; i < substeps; ++i) {
-      if (integrator.Step(f) != Status::kOk) {
-        state.SkipWithError("step failed");
-        break;
-      }
-    }
+    const bool ok = tick();
     times.push_back(
         std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start)
             .count());
     cpu_times.push_back(cpu_now_us() - cpu_start);
+    if (!ok) {
+      state.SkipWithError("a step failed");
+      break;
+    }
   }
   if (times.empty()) return;
   const StepTiming timing = StepTiming::From(std::move(times));
   const StepTiming cpu = StepTiming::From(std::move(cpu_times));
-  const ContactEvents& events = forces.get<0>().events();
   state.counters["median_us"] = timing.median_us;
   state.counters["p99_us"] = timing.p99_us;
   state.counters["max_us"] = timing.max_us;
   state.counters["cpu_median_us"] = cpu.median_us;
   state.counters["cpu_p99_us"] = cpu.p99_us;
   state.counters["cpu_max_us"] = cpu.max_us;
+}
+
+void BM_SurfaceTick(benchmark::State& state) {
+  const int substeps = static_cast<int>(state.range(0));
+  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
+  Surface forces = MakeSurface(model);
+  const double dt = 1e-3 / substeps / model.units().time;
+  NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
+                                        GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt);
+  const int n = model.FreeDofCount();
+  const int tip = model.dofs().Reduced(20, NodalDof::kUy);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  if (integrator.Initialize(f, f, f) != Status::kOk) state.SkipWithError("initialisation failed");
+  long tick = 0;
+  TimeTicks(state, [&] {
+    f[tip] = HandForce(++tick) / model.units().force;
+    for (int i = 0; i < substeps; ++i) {
+      if (integrator.Step(f) != Status::kOk) return false;
+    }
+    return true;
+  });
+  const ContactEvents& events = forces.get<0>().events();
   state.counters["stuck_events"] = static_cast<double>(events.stuck);
   state.counters["releases"] = static_cast<double>(events.releases);
 }
@@ -105,6 +123,35 @@ BENCHMARK(BM_SurfaceTick)
     ->Arg(20)
     ->ArgName("substeps")
     ->Iterations(10 * kCycle)
+    ->Unit(benchmark::kMicrosecond);
+
+// The tick the hand feels (HapticBeam): the probe (coupling 5 N/m, radius 2 um) presses the tip
+// 4 um down, past the substrate, and lifts it 3 um clear, over and over (kCycle ticks a cycle),
+// with the same surface forces, on the full model's path (generalised-alpha, 2 steps a tick) or
+// the modal one (`modes` modes, Q = 100, 2 steps a tick).
+void BM_TouchedBeamTick(benchmark::State& state) {
+  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
+  Surface forces = MakeSurface(model);
+  HapticPhysicsOptions physics;
+  physics.modes = static_cast<int>(state.range(0));
+  physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
+  physics.damping = DampingModel::QualityFactor(100);
+  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
+  long tick = 0;
+  TimeTicks(state, [&] {
+    const double s = static_cast<double>(tick % kCycle) / kCycle;
+    const double depth = s < 0.5 ? 4e-6 * s / 0.5 : 4e-6 - 7e-6 * (s - 0.5) / 0.5;
+    ++tick;
+    return beam.Advance(Eigen::Vector3d(200e-6, 1e-6 - depth + 2e-6, 0.0), 0.0) == Status::kOk;
+  });
+  state.counters["stuck_events"] = static_cast<double>(forces.get<0>().events().stuck);
+}
+BENCHMARK(BM_TouchedBeamTick)
+    ->Arg(0)
+    ->Arg(4)
+    ->Arg(8)
+    ->ArgName("modes")
+    ->Iterations(4 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

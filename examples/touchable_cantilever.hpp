@@ -32,7 +32,7 @@ class TouchableCantilever {
     HapticPhysicsOptions physics_options;
     physics_options.tick_s = 1.0 / specs.nominal_rate_hz;  // one physics tick a servo tick
     beam_ = std::make_unique<HapticBeam<2>>(model_, probe, &forces_, &forces_.get<0>(),
-                                            RayleighDamping{}, physics_options);
+                                            physics_options);
     HapticLoopOptions options;
     options.physics = physics;
     options.scaling.position_scale = 5000.0;

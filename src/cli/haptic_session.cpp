@@ -10,8 +10,14 @@
 namespace cosmems::internal {
 namespace {
 
+// The tick is the period of the scene's rate; the scene's integrator picks the time path.
 HapticPhysicsOptions AtSceneRate(const Scene& scene, HapticPhysicsOptions physics) {
   physics.tick_s = 1.0 / scene.analysis.rate;
+  if (scene.analysis.integrator == Integrator::kModal) {
+    physics.path = TimePath::kModal;
+    physics.modes = scene.model.modes;
+    physics.damping = MakeDampingModel(scene);
+  }
   return physics;
 }
 
@@ -59,7 +65,7 @@ HapticSession<Dim>::HapticSession(const Scene& scene, OpenedDevice device,
     : opened_(std::move(device)),
       model_(MakeBeamDescription(scene), Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField),
       forces_(model_, scene),
-      beam_(model_, opened_.settings.probe, forces_.All(), forces_.contact(), {},
+      beam_(model_, opened_.settings.probe, forces_.All(), forces_.contact(),
             AtSceneRate(scene, physics)),
       loop_(beam_, LoopOptions(opened_)) {}
 

@@ -12,10 +12,11 @@ void AddHapticWarnings(const Scene& scene, const std::string& unchanged,
   if (!MakeLoadCase(scene).Empty()) {
     warnings.push_back("loads" + unchanged + "the hand's probe is the only load on the beam");
   }
-  if (IsOn(scene.effects.damping)) {
+  if (IsOn(scene.effects.damping) && scene.analysis.integrator != Integrator::kModal) {
     warnings.push_back("effects.damping" + unchanged +
                        "the touched beam is damped by the squeeze film only (the tick's "
-                       "integrator removes the vibrations it does not resolve)");
+                       "integrator removes the vibrations it does not resolve; the modal "
+                       "integrator takes it)");
   }
 }
 

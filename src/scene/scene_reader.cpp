@@ -308,6 +308,11 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
   if (a.type == AnalysisType::kHaptic) {
     a.duration = r.OptionalPositive("analysis.duration", kHapticDuration).value_or(0.0);
+    a.integrator = r.OptionalChoice("analysis.integrator", kIntegrators, "integrator")
+                       .value_or(Integrator::kGeneralizedAlpha);
+    r.Require(a.integrator == Integrator::kGeneralizedAlpha || a.integrator == Integrator::kModal,
+              "analysis.integrator",
+              "the haptic analysis steps by \"generalized-alpha\" (the full model) or \"modal\"");
     a.rate = r.Number("analysis.rate", a.rate);
     r.Require(a.rate == 500.0 || a.rate == 1000.0 || a.rate == 2000.0, "analysis.rate",
               "must be 500, 1000 or 2000 (Hz: the rates haptic devices run at)");
@@ -481,11 +486,24 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
             "ratios (effects.damping); a gas film needs a Newmark-family integrator");
 }
 
-// The haptic analysis touches the full model (the Cosserat rod is refused in CheckCosserat).
+// The haptic analysis touches the full model, or its modes with analysis.integrator = "modal"
+// (the Cosserat rod is refused in CheckCosserat).
 void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   if (scene.analysis.type != AnalysisType::kHaptic) return;
-  r.Require(scene.model.modes == 0, "model.modes",
-            "must be 0 for the haptic analysis (the full model is touched)");
+  if (scene.analysis.integrator == Integrator::kModal) {
+    r.Require(scene.model.modes >= 1, "model.modes",
+              "analysis.integrator = \"modal\" needs at least one mode");
+    r.Require(!IsOn(scene.effects.squeeze_film), "effects.squeeze_film",
+              "not available with analysis.integrator = \"modal\": a gas film needs the full "
+              "model's integrator");
+    r.Require(IsOn(scene.effects.damping), "effects.damping",
+              "analysis.integrator = \"modal\" touches modes that ring for ever without it: "
+              "declare their damping, e.g. { quality_factor = 100.0 }");
+  } else {
+    r.Require(scene.model.modes == 0, "model.modes",
+              "modal reduction of the touched beam needs analysis.integrator = \"modal\" (0: the "
+              "full model)");
+  }
 }
 
 }  // namespace

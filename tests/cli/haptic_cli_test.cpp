@@ -58,6 +58,21 @@ TEST(HapticCliTest, TheSpatialBeamIsPressedOntoTheSubstrateToo) {
             json.at("force_limit_n").get<double>() * (1 + 1e-12));
 }
 
+// The modal path: eight damped modes instead of the full model, the same press, the same bounds.
+TEST(HapticCliTest, TheModalPathRunsThePressWithinTheDeviceLimits) {
+  const nlohmann::json json =
+      RunJson(Args({"cantilever-haptic", "--set", "analysis.integrator=\"modal\"", "--set",
+                    "model.modes=8", "--set", "effects.damping.quality_factor=100.0"}));
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_EQ(json.at("physics").at("failed_ticks").get<long>(), 0);
+  EXPECT_GE(json.at("contact_events").at("contacts").get<long>(), 1);
+  EXPECT_GT(json.at("max_device_force_n").get<double>(),
+            0.1 * json.at("force_limit_n").get<double>());
+  EXPECT_LE(json.at("max_device_force_n").get<double>(),
+            json.at("force_limit_n").get<double>() * (1 + 1e-12));
+  EXPECT_TRUE(json.at("warnings").empty()) << json.at("warnings");
+}
+
 // The press sticks the tip; when the stylus lifts, a cantilever longer than the arc-shaped
 // detachment length (100 um here, with the scene's 20 nm asperities) stays held by its tip,
 // arc-shaped, and a shorter one springs free.

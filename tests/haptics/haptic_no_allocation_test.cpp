@@ -3,6 +3,8 @@
 // the tick and the safety layer after it.
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "allocation_counter.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
@@ -12,10 +14,17 @@
 namespace cosmems {
 namespace {
 
-TEST(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing) {
+// The full model's path and the modal one (eight modes, Q = 100).
+class HapticNoAllocationTest : public ::testing::TestWithParam<TimePath> {};
+
+TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing) {
   const BeamModel<2> model = test::HapticCantilever();
   test::HapticSurface forces = test::MakeHapticSurface(model);
-  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>());
+  HapticPhysicsOptions physics;
+  physics.path = GetParam();
+  physics.modes = 8;
+  physics.damping = DampingModel::QualityFactor(100);
+  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
   HapticLoopOptions options;
   options.scaling.position_scale = 5000.0;
   options.scaling.force_scale = 2e5;
@@ -39,6 +48,13 @@ TEST(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing) 
   ASSERT_TRUE(loop.UpdateFrame());
   EXPECT_GE(loop.frame().events.stuck, 1);
 }
+
+std::string PathName(const ::testing::TestParamInfo<TimePath>& path) {
+  return path.param == TimePath::kModal ? "Modal" : "FullModel";
+}
+
+INSTANTIATE_TEST_SUITE_P(Paths, HapticNoAllocationTest,
+                         ::testing::Values(TimePath::kNewmarkFamily, TimePath::kModal), PathName);
 
 }  // namespace
 }  // namespace cosmems

@@ -14,7 +14,7 @@ namespace cosmems::test {
 struct ReferenceTouch {
   explicit ReferenceTouch(const HapticPhysicsOptions& physics = {})
       : forces(MakeHapticSurface(model)),
-        beam(model, ProbeOptions{kProbeRadius, coupling}, &forces, &forces.get<0>(), {}, physics),
+        beam(model, ProbeOptions{kProbeRadius, coupling}, &forces, &forces.get<0>(), physics),
         loop(beam, LoopOptions(specs, coupling)) {}
 
   static HapticLoopOptions LoopOptions(const DeviceSpecs& specs, double coupling) {

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cosmems/analysis/output_point.hpp"
+#include "cosmems/beam/output_point.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/load_vector.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"

@@ -342,7 +342,24 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"rate", With("analysis.type", "\"haptic\"").Set("analysis.rate", "750.0"),
                  "analysis.rate = 750.0", "must be 500, 1000 or 2000"},
         BadScene{"modes", With("analysis.type", "\"haptic\"").Set("model.modes", "4"),
-                 "model.modes = 4", "must be 0 for the haptic analysis"},
+                 "model.modes = 4", "needs analysis.integrator = \"modal\""},
+        BadScene{"integrator",
+                 With("analysis.type", "\"haptic\"").Set("analysis.integrator", "\"hht\""),
+                 "analysis.integrator = \"hht\"", "steps by \"generalized-alpha\""},
+        BadScene{"modal_without_modes",
+                 With("analysis.type", "\"haptic\"").Set("analysis.integrator", "\"modal\""),
+                 "model.modes", "needs at least one mode"},
+        BadScene{"modal_squeeze_film",
+                 With("analysis.type", "\"haptic\"")
+                     .Set("analysis.integrator", "\"modal\"")
+                     .Set("model.modes", "4")
+                     .Set("effects.squeeze_film", "{}"),
+                 "effects.squeeze_film = {}", "a gas film needs the full model's integrator"},
+        BadScene{"modal_undamped",
+                 With("analysis.type", "\"haptic\"")
+                     .Set("analysis.integrator", "\"modal\"")
+                     .Set("model.modes", "4"),
+                 "effects.damping", "modes that ring for ever without it"},
         BadScene{"cosserat",
                  With("analysis.type", "\"haptic\"")
                      .Set("model.theory", "\"cosserat\"")

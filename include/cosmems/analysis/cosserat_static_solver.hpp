@@ -64,7 +64,7 @@ struct CosseratStaticOptions {
 ///
 /// On failure the state returns to where Solve() started and the status says why. Solve()
 /// allocates nothing and throws nothing once the solver is built.
-class CosseratStaticSolver {
+class CosseratStaticSolver : private PlainNewtonScheme {
  public:
   explicit CosseratStaticSolver(const CosseratRod& rod, CosseratStaticOptions options = {})
       : rod_(rod),
@@ -147,9 +147,6 @@ class CosseratStaticSolver {
     out.reference = reference_;
     return true;
   }
-  bool Retreat() { return false; }
-  double RoundOff() { return 0.0; }  // converged on the residual or the increment alone
-  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
   NewtonFactor Factor(double /*shift*/) {
     NewtonFactor out;
     out.fresh = !factored_;
@@ -159,7 +156,6 @@ class CosseratStaticSolver {
     system_.SolveInPlace(increment_);
     return out;
   }
-  double MassTerm() const { return 0.0; }
   // A negligible correction is taken whole and ends the solve. Otherwise it is halved while the
   // tangent at the trial state is not positive definite or anything there is not finite (see
   // the class comment); the trial's factorisation serves the next iteration.
@@ -197,7 +193,6 @@ class CosseratStaticSolver {
     std::swap(state_, trial_);
     return out;
   }
-  bool Settle() { return true; }
   Status Finish() { return Status::kOk; }
 
   // Internal forces at `s`, kept while the state does not change; the tangent follows on demand.

@@ -50,7 +50,7 @@ struct NonlinearStaticSolution {
 /// correction that overshoots a stiffening force is shortened instead of thrown away. Converged
 /// on NewtonOptions' relative residual or increment.
 template <int Dim>
-class NonlinearStaticSolve {
+class NonlinearStaticSolve : private PlainNewtonScheme {
  public:
   NonlinearStaticSolve(const BeamModel<Dim>& model, NonlinearForce& force,
                        const NonlinearStaticOptions& options, NonlinearForce* ramped)
@@ -120,10 +120,8 @@ class NonlinearStaticSolve {
     out.reference = reference_;
     return evaluated_;
   }
-  bool Retreat() { return false; }
   // kd_ serves as the bound's work vector: the next evaluation forms K d again.
   double RoundOff() { return k_.ProductRoundOff(d_, kd_); }
-  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
   NewtonFactor Factor(double /*shift*/) {
     jacobian_.mutable_data() = k_.data() + tangent_.band().data();
     NewtonFactor out;
@@ -134,7 +132,6 @@ class NonlinearStaticSolve {
     }
     return out;
   }
-  double MassTerm() const { return 0.0; }
   // Backtracks along the correction while the residual does not fall, and takes the last trial
   // after max_line_search halvings whatever it gives.
   NewtonCorrection Update() {

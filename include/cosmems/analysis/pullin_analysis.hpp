@@ -6,9 +6,9 @@
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/fold_search.hpp"
-#include "cosmems/analysis/output_point.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/nonlinear_force.hpp"
+#include "cosmems/beam/output_point.hpp"
 #include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
@@ -49,7 +49,7 @@ struct PullInResult {
 /// through the fold where J turns singular, and J is positive definite on the stable side, where
 /// FindFold keeps the solves. d lambda / ds = gap / e^T b.
 template <int Dim, typename Pressure>
-class FoldPath {
+class FoldPath : private PlainNewtonScheme {
  public:
   FoldPath(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
            NonlinearForce* other)
@@ -114,10 +114,8 @@ class FoldPath {
     out.side_conditions_met = std::abs(c_) <= newton_.options().residual_tolerance * gap_;
     return true;
   }
-  bool Retreat() { return false; }
   // a_ serves as the bound's work vector: the Newton step overwrites it.
   double RoundOff() { return model_.Stiffness().ProductRoundOff(d_, a_); }
-  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
 
   // J = K + dr/dd + lambda dr_1/dd, factored; b solves J b = r_1.
   Status FactorAndSolveLoad() {
@@ -143,7 +141,6 @@ class FoldPath {
     factor_.SolveInPlace(a_);
     return out;
   }
-  double MassTerm() const { return 0.0; }
   // d lambda = (e^T a + c) / e^T b; no increment test (the bordered system converges on both
   // of its residuals).
   NewtonCorrection Update() {
@@ -152,7 +149,6 @@ class FoldPath {
     lambda_ += dlambda;
     return {};
   }
-  bool Settle() { return true; }
   // The converged state's slope d lambda / ds = gap / e^T b; a state not definite is past the
   // fold.
   Status Finish() {

@@ -8,14 +8,9 @@
 #include "cosmems/time/damping_model.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/load_time_function.hpp"
+#include "cosmems/time/stepper_options.hpp"
 
 namespace cosmems {
-
-/// How a transient run advances in time.
-enum class TimePath {
-  kNewmarkFamily,  ///< full order, the linear fast path with GeneralizedAlphaParameters
-  kModal,          ///< `modes` modes propagated exactly, truncated modes statically
-};
 
 struct TransientOptions {
   double duration = 0.0;   ///< s
@@ -31,6 +26,18 @@ struct TransientOptions {
   SpdSolverKind solver = SpdSolverKind::kAuto;
   double output_x = 0.0;    ///< m: where uy is recorded (the tip or mid-span)
   int max_history = 20000;  ///< samples kept in the history, evenly strided
+
+  /// The stepper's share of these options.
+  StepperOptions Stepper() const {
+    StepperOptions out;
+    out.path = path;
+    out.time_step = time_step;
+    out.parameters = parameters;
+    out.modes = modes;
+    out.damping = damping;
+    out.solver = solver;
+    return out;
+  }
 
   /// The load amplitude at step `i`: the time function's, or 0 after a static start.
   double Amplitude(long i) const {

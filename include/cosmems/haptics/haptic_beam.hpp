@@ -2,7 +2,10 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
+#include "cosmems/analysis/beam_stepper_factory.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/force_sum.hpp"
 #include "cosmems/haptics/haptic_frame.hpp"
@@ -10,7 +13,8 @@
 #include "cosmems/haptics/probe_contact.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
-#include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "cosmems/time/beam_stepper.hpp"
+#include "cosmems/time/stepper_options.hpp"
 
 namespace cosmems {
 
@@ -25,11 +29,21 @@ struct HapticPhysicsOptions {
   /// Generalised-alpha's spectral radius: 0 annihilates the unresolved vibrations (the hand
   /// feels the quasi-static beam, as it would the real one) and adds no energy at impacts.
   double rho_inf = 0.0;
+  /// The time path (analysis.integrator = "modal" with model.modes): the Newmark family on the
+  /// full model, or `modes` modes with the forces held over each step and the truncated modes
+  /// answering statically.
+  TimePath path = TimePath::kNewmarkFamily;
+  int modes = 0;
+  /// The modal path's damping, as ratios of the modes (the real beam's quality factor): exact
+  /// propagation keeps every mode it does not damp ringing under the hand. The full path leaves
+  /// it out (rho_inf removes what the ticks do not resolve).
+  DampingModel damping;
 
   void Validate() const {
     RequirePositive("tick_s", tick_s);
     RequireWithin("substeps", substeps, 1, 10000);
     RequireWithin("rho_inf", rho_inf, 0.0, 1.0);
+    if (path == TimePath::kModal) RequireWithin("modes", modes, 1, 10000);
   }
 };
 
@@ -43,21 +57,32 @@ class HapticBeam {
  public:
   /// `effects` (the scene's forces; nullptr: none) and `contact` (the substrate contact among
   /// them, for its state and events; nullptr: none) belong to the caller and must outlive this.
+  /// Throws std::invalid_argument on unusable options, std::runtime_error naming the status
+  /// when the modal path's modes cannot be found.
   HapticBeam(const BeamModel<Dim>& model, const ProbeOptions& probe, NonlinearForce* effects,
-             SubstrateContact<Dim>* contact, RayleighDamping damping = {},
-             const HapticPhysicsOptions& options = {})
+             SubstrateContact<Dim>* contact, const HapticPhysicsOptions& options = {})
       : model_(model), probe_(model, probe), contact_(contact), options_(ValidOptions(options)) {
     if (effects) forces_.Add(*effects);
     forces_.Add(probe_);
     const int n = model.FreeDofCount();
-    load_.setZero(n);
+    zero_.setZero(n);
+    amplitude_.setZero(1);
     shape_.setZero(n);
     compliance_work_.setZero(n);
     compliance_factor_.Compute(model.Stiffness());
-    integrator_ = std::make_unique<NonlinearNewmarkIntegrator>(
-        model.Mass(0), model.Stiffness(), damping, forces_,
-        GeneralizedAlphaParameters::FromSpectralRadius(options_.rho_inf),
-        options_.tick_s / options_.substeps / model.units().time);
+    // The probe and the effects are the forces; the one load pattern stays zero.
+    StepperOptions stepper;
+    stepper.path = options_.path;
+    stepper.time_step = options_.tick_s / options_.substeps;
+    stepper.parameters = GeneralizedAlphaParameters::FromSpectralRadius(options_.rho_inf);
+    stepper.modes = options_.modes;
+    if (options_.path == TimePath::kModal) stepper.damping = options_.damping;
+    BeamStepperSetup setup = MakeBeamStepper(model, stepper, Eigen::MatrixXd::Zero(n, 1), &forces_);
+    if (setup.status != Status::kOk) {
+      throw std::runtime_error(std::string("haptic physics: the modal analysis failed: ") +
+                               ToString(setup.status));
+    }
+    stepper_ = std::move(setup.stepper);
     probe_.MoveTo(Eigen::Vector3d(0.0, 1.0, 0.0));  // far above until the hand comes
     Reset();
   }
@@ -68,7 +93,7 @@ class HapticBeam {
     probe_.MoveTo(probe_m);
     Status status = Status::kOk;
     for (int i = 0; i < options_.substeps && status == Status::kOk; ++i) {
-      status = integrator_->Step(load_);
+      status = stepper_->Step(amplitude_);
     }
     status_ = status;
     UpdateLocalModel(probe_m, source_time_s);
@@ -80,19 +105,21 @@ class HapticBeam {
   /// are split (HapticLoop does).
   Status Reset() {
     if (contact_) contact_->Reset();
-    status_ = integrator_->Initialize(load_, load_, load_);
+    status_ = stepper_->Initialize(zero_, zero_, amplitude_);
     local_.valid = false;
     return status_;
   }
 
   const LocalModel& local_model() const { return local_; }
   Status status() const { return status_; }
-  double time_s() const { return integrator_->time() * model_.units().time; }
+  double time_s() const { return stepper_->time() * model_.units().time; }
   /// Simulated time one Advance() covers [s].
   double tick_s() const { return options_.tick_s; }
   const BeamModel<Dim>& model() const { return model_; }
   /// Displacement (reduced dofs, internal units).
-  const Eigen::VectorXd& displacement() const { return integrator_->displacement(); }
+  const Eigen::VectorXd& displacement() const { return stepper_->displacement(); }
+  /// What the last tick's last step cost.
+  const NewtonStats& last_stats() const { return stepper_->last_stats(); }
   const ProbeContact<Dim>& probe() const { return probe_; }
   const SubstrateContact<Dim>* contact() const { return contact_; }
 
@@ -160,9 +187,9 @@ class HapticBeam {
   SubstrateContact<Dim>* contact_;
   HapticPhysicsOptions options_;
   ForceSum forces_;
-  std::unique_ptr<NonlinearNewmarkIntegrator> integrator_;
+  std::unique_ptr<BeamStepper> stepper_;
   BandCholesky compliance_factor_;
-  Eigen::VectorXd load_, shape_, compliance_work_;
+  Eigen::VectorXd zero_, amplitude_, shape_, compliance_work_;
   LocalModel local_;
   Status status_ = Status::kOk;
 };

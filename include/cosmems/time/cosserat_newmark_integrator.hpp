@@ -61,7 +61,7 @@ namespace cosmems {
 /// A step whose iterations fail is retried as two half steps, recursively up to
 /// NewtonOptions::max_cuts; on final failure the state stays at the start of the step and the
 /// status says why. Implicit members only (beta > 0). Steps allocate nothing.
-class CosseratNewmarkIntegrator {
+class CosseratNewmarkIntegrator : private PlainNewtonScheme {
  public:
   CosseratNewmarkIntegrator(const CosseratRod& rod, GeneralizedAlphaParameters parameters,
                             double time_step, NewtonOptions options = RodNewtonOptions())
@@ -201,9 +201,6 @@ class CosseratNewmarkIntegrator {
     kinematics_stale_ = false;
     return true;
   }
-  bool Retreat() { return false; }
-  double RoundOff() { return 0.0; }                     // converged on residual or increment
-  Status SolveKept() { return Status::kNotConverged; }  // the key is NaN: never asked
   NewtonFactor Factor(double /*shift*/) {
     AssembleMatrix(h_);
     NewtonFactor out;
@@ -213,7 +210,6 @@ class CosseratNewmarkIntegrator {
     system_.SolveInPlace(increment_);
     return out;
   }
-  double MassTerm() const { return 0.0; }
   // The update that moves each chord with its element's rotation (see CosseratRod::Retract):
   // the axial stiffness outweighs the inertia in this matrix by far (EA/h against
   // rho A h / (beta dt^2)), so the stretch of a plain update would cost iterations here too.
@@ -226,7 +222,6 @@ class CosseratNewmarkIntegrator {
     out.iterate = new_state_.Size();
     return out;
   }
-  bool Settle() { return true; }
   Status Finish() { return Accept(h_, kinematics_stale_); }
 
   // The coefficients of the step of length h.

@@ -10,6 +10,7 @@
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
+#include "cosmems/time/newton_stats.hpp"
 #include "cosmems/time/rayleigh_damping.hpp"
 
 namespace cosmems {
@@ -134,6 +135,8 @@ class LinearNewmarkIntegrator {
   double time_step() const { return dt_; }
   Status info() const { return status_; }
   SpdSolverKind solver_kind() const { return solver_.kind(); }
+  /// The linear path solves once a step with the factor made at set-up: no Newton, all zero.
+  const NewtonStats& last_stats() const { return no_newton_; }
 
  private:
   // The step's constant coefficients. The vectors the next step multiplies by M and K are, with
@@ -178,6 +181,7 @@ class LinearNewmarkIntegrator {
   int pad_;
   bool uses_mass_ = true;  ///< x_m = am a + cM vp is not identically zero
   Eigen::VectorXd d_, v_, a_, a_new_, f_, x_m_, x_k_;
+  NewtonStats no_newton_;
 };
 
 }  // namespace cosmems

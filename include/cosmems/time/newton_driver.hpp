@@ -35,6 +35,18 @@ struct NewtonCorrection {
   int factorizations = 0;
 };
 
+/// The hooks of NewtonDriver's scheme for a scheme without use for them: no retreat (no force
+/// with a bounded domain), no stall test, no kept factor, no mass term to raise, no force state
+/// to settle. A scheme derives from it (privately, the driver its friend) and defines the rest.
+class PlainNewtonScheme {
+ public:
+  bool Retreat() { return false; }
+  double RoundOff() { return 0.0; }
+  Status SolveKept() { return Status::kNotConverged; }  // asked only for a NaN key: never
+  double MassTerm() const { return 0.0; }
+  bool Settle() { return true; }
+};
+
 /// The Newton protocol every nonlinear solve of the library follows: the generalised-alpha step
 /// on the full model, the modal step with the held force, the Cosserat rod's step on the rotation
 /// group, and the static, pull-in and rod equilibria. A scheme supplies its residual, matrix,
