@@ -15,7 +15,8 @@
 #include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/haptics/realtime_thread.hpp"
 #include "cosmems/scene/scene_loader.hpp"
-#include "haptic_report.hpp"
+#include "cosmems/scripted/scripted_device.hpp"
+#include "cosmems/session/haptic_session.hpp"
 
 namespace cosmems {
 namespace {
@@ -34,23 +35,27 @@ void BM_PacedHapticRun(benchmark::State& state) {
       "cantilever-haptic",
       {SceneOverride::Parse("analysis.duration=10"), SceneOverride::Parse("device.realtime=true")});
   for (auto _ : state) {
-    const auto report = internal::HapticReport::Run(scene);
-    const internal::HapticResults& r = report->results();
-    state.counters["ticks"] = static_cast<double>(r.servo.ticks);
-    state.counters["rate_hz"] = r.servo.rate_hz;
-    state.counters["realtime"] = r.servo.realtime ? 1 : 0;
-    state.counters["deadline_misses"] = static_cast<double>(r.servo.deadline_misses);
-    state.counters["period_max_us"] = r.servo.period_max_us;
-    state.counters["tick_median_us"] = r.servo.ComputeQuantileUs(0.5);
-    state.counters["tick_p99_us"] = r.servo.ComputeQuantileUs(0.99);
-    state.counters["tick_max_us"] = r.servo.compute_max_us;
-    state.counters["physics_median_us"] = r.physics.ComputeQuantileUs(0.5);
-    state.counters["physics_p99_us"] = r.physics.ComputeQuantileUs(0.99);
-    state.counters["physics_max_us"] = r.physics.compute_max_us;
-    state.counters["physics_misses"] = static_cast<double>(r.physics.deadline_misses);
-    state.counters["failed_physics"] = static_cast<double>(r.failed_physics_ticks);
-    PrintHistogram(r.servo, "servo tick");
-    PrintHistogram(r.physics, "physics tick");
+    HapticSession<2> session(scene, OpenDevice(scene));
+    session.Start();
+    session.opened().scripted->WaitUntilDone();
+    session.Stop();
+    const LoopStats servo = session.device().stats();
+    const LoopStats& physics = session.loop().physics_stats();
+    state.counters["ticks"] = static_cast<double>(servo.ticks);
+    state.counters["rate_hz"] = servo.rate_hz;
+    state.counters["realtime"] = servo.realtime ? 1 : 0;
+    state.counters["deadline_misses"] = static_cast<double>(servo.deadline_misses);
+    state.counters["period_max_us"] = servo.period_max_us;
+    state.counters["tick_median_us"] = servo.ComputeQuantileUs(0.5);
+    state.counters["tick_p99_us"] = servo.ComputeQuantileUs(0.99);
+    state.counters["tick_max_us"] = servo.compute_max_us;
+    state.counters["physics_median_us"] = physics.ComputeQuantileUs(0.5);
+    state.counters["physics_p99_us"] = physics.ComputeQuantileUs(0.99);
+    state.counters["physics_max_us"] = physics.compute_max_us;
+    state.counters["physics_misses"] = static_cast<double>(physics.deadline_misses);
+    state.counters["failed_physics"] = static_cast<double>(session.loop().failed_ticks());
+    PrintHistogram(servo, "servo tick");
+    PrintHistogram(physics, "physics tick");
   }
 }
 BENCHMARK(BM_PacedHapticRun)->Iterations(1)->Unit(benchmark::kSecond);

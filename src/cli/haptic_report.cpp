@@ -8,7 +8,7 @@
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
-#include "haptic_session.hpp"
+#include "cosmems/session/haptic_session.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {

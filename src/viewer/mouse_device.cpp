@@ -14,8 +14,8 @@ MouseDevice OpenMouseDevice(const Scene& scene) {
   device.backend = DeviceBackend::kScripted;  // the settings then include the script's start
   scripted.device = device;
   MouseDevice out;
-  internal::OpenedDevice& opened = out.opened;
-  opened.settings = internal::MakeHapticSettings(scripted, internal::ScriptedSpecs(scripted));
+  OpenedDevice& opened = out.opened;
+  opened.settings = MakeHapticSettings(scripted, ScriptedSpecs(scripted));
   auto hand = std::make_unique<LiveTrajectory>(opened.settings.trajectory->Position(0.0));
   out.hand = hand.get();
   opened.settings.trajectory.reset();

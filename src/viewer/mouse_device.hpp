@@ -2,7 +2,7 @@
 
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scripted/live_trajectory.hpp"
-#include "haptic_session.hpp"
+#include "cosmems/session/haptic_session.hpp"
 
 namespace cosmems::viewer {
 
@@ -10,7 +10,7 @@ namespace cosmems::viewer {
 /// ScriptedDevice plays, so the mouse reaches the beam through the same interface, servo loop,
 /// safety layer and figures as a PHANTOM Omni.
 struct MouseDevice {
-  internal::OpenedDevice opened;
+  OpenedDevice opened;
   /// The live script, owned by the device: the display thread moves it.
   LiveTrajectory* hand = nullptr;
 };

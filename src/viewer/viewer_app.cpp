@@ -202,7 +202,7 @@ class ViewerApp {
 
     const Stage stage = BuildStage(scene_, space_);
     BuildBeamMesh(frame, scene_.structure.width, scene_.structure.thickness, space_, beam_);
-    const internal::HapticSettings& settings = session_->opened().settings;
+    const HapticSettings& settings = session_->opened().settings;
     BuildStylus(frame.probe_m, settings.probe.radius, 0.25 * scene_.structure.length, space_,
                 stylus_);
     renderer.BeginScene(width, height, viewport,
@@ -242,7 +242,7 @@ class ViewerApp {
     ViewerFigures f;
     f.scene = scene_.source;
     f.input = ToString(session_->input());
-    const internal::OpenedDevice& opened = session_->opened();
+    const OpenedDevice& opened = session_->opened();
     f.device = opened.device->specs().model;
     f.screenshot = options_.screenshot;
     glfwGetFramebufferSize(window, &f.width, &f.height);

@@ -11,8 +11,7 @@ namespace {
 template <int Dim>
 class SessionOfDimension final : public ViewerSession {
  public:
-  SessionOfDimension(const Scene& scene, internal::OpenedDevice device,
-                     const HapticPhysicsOptions& physics)
+  SessionOfDimension(const Scene& scene, OpenedDevice device, const HapticPhysicsOptions& physics)
       : session_(scene, std::move(device), physics) {
     session_.Start();
   }
@@ -21,7 +20,7 @@ class SessionOfDimension final : public ViewerSession {
   const HapticFrame& frame() const override { return session_.loop().frame(); }
   void RequestReset() override { session_.loop().RequestReset(); }
   void Stop() override { session_.Stop(); }
-  const internal::OpenedDevice& opened() const override { return session_.opened(); }
+  const OpenedDevice& opened() const override { return session_.opened(); }
   int dofs() const override { return session_.model().FreeDofCount(); }
   const LoopStats& physics_stats() const override { return session_.loop().physics_stats(); }
   std::uint64_t failed_ticks() const override { return session_.loop().failed_ticks(); }
@@ -33,10 +32,10 @@ class SessionOfDimension final : public ViewerSession {
   }
 
  private:
-  internal::HapticSession<Dim> session_;
+  HapticSession<Dim> session_;
 };
 
-std::unique_ptr<ViewerSession> StartOn(const Scene& scene, internal::OpenedDevice device,
+std::unique_ptr<ViewerSession> StartOn(const Scene& scene, OpenedDevice device,
                                        const HapticPhysicsOptions& physics, Input input,
                                        LiveTrajectory* hand, std::string note) {
   auto start = [&](auto session) -> std::unique_ptr<ViewerSession> {
@@ -83,7 +82,7 @@ std::unique_ptr<ViewerSession> ViewerSession::Start(const Scene& scene, Input in
     } else {
       try {
         const Scene omni = WithBackend(scene, DeviceBackend::kOpenHaptics, true);
-        return StartOn(omni, internal::OpenDevice(omni), physics, Input::kOmni, nullptr, "");
+        return StartOn(omni, OpenDevice(omni), physics, Input::kOmni, nullptr, "");
       } catch (const std::runtime_error& e) {
         note = std::string("no haptic device (") + e.what() + "): the mouse drives the stylus";
       }
@@ -96,7 +95,7 @@ std::unique_ptr<ViewerSession> ViewerSession::Start(const Scene& scene, Input in
   }
   const Scene chosen = input == Input::kOmni ? WithBackend(scene, DeviceBackend::kOpenHaptics, true)
                                              : WithBackend(scene, DeviceBackend::kScripted, true);
-  return StartOn(chosen, internal::OpenDevice(chosen), physics, input, nullptr, note);
+  return StartOn(chosen, OpenDevice(chosen), physics, input, nullptr, note);
 }
 
 }  // namespace cosmems::viewer

@@ -8,7 +8,7 @@
 #include "cosmems/haptics/loop_stats.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scripted/live_trajectory.hpp"
-#include "haptic_session.hpp"
+#include "cosmems/session/haptic_session.hpp"
 
 namespace cosmems::viewer {
 
@@ -41,7 +41,7 @@ class ViewerSession {
   virtual void RequestReset() = 0;
   /// Stops the servo loop and the physics; the figures are complete afterwards.
   virtual void Stop() = 0;
-  virtual const internal::OpenedDevice& opened() const = 0;
+  virtual const OpenedDevice& opened() const = 0;
   virtual int dofs() const = 0;
   /// The physics thread's tick times: complete only after Stop().
   virtual const LoopStats& physics_stats() const = 0;

@@ -1,4 +1,4 @@
-#include "haptic_session.hpp"
+#include "cosmems/session/haptic_session.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -7,7 +7,7 @@
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 
-namespace cosmems::internal {
+namespace cosmems {
 namespace {
 
 // The tick is the period of the scene's rate; the scene's integrator picks the time path.
@@ -94,4 +94,4 @@ void HapticSession<Dim>::Stop() {
 template class HapticSession<2>;
 template class HapticSession<3>;
 
-}  // namespace cosmems::internal
+}  // namespace cosmems

@@ -1,16 +1,25 @@
-#include "haptic_settings.hpp"
+#include "cosmems/session/haptic_settings.hpp"
 
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
-#include "cli_input_error.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/csv_trajectory.hpp"
-#include "text_format.hpp"
 
-namespace cosmems::internal {
+namespace cosmems {
 namespace {
+
+// A stiffness in a message, to five significant digits.
+std::string FiveDigits(double value) {
+  std::ostringstream out;
+  out.precision(5);
+  out << value;
+  return out.str();
+}
 
 // The free structure's stiffness under the probe's start point: 3EI/L^3 at a cantilever's tip,
 // 192EI/L^3 at a bridge's midspan.
@@ -53,10 +62,10 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
   out.felt_coupling_n_per_m = out.scaling.FeltStiffness(out.probe.stiffness);
   out.felt_structure_n_per_m = out.scaling.FeltStiffness(k_structure);
   if (out.felt_coupling_n_per_m > renderable) {
-    throw CliInputError("device.force_scale = " + FormatValue(out.scaling.force_scale) +
-                        ": the hand would feel the coupling at " +
-                        Significant(out.felt_coupling_n_per_m) + " N/m, above the " +
-                        Significant(renderable) + " N/m the device renders stably");
+    throw std::invalid_argument("device.force_scale = " + FormatValue(out.scaling.force_scale) +
+                                ": the hand would feel the coupling at " +
+                                FiveDigits(out.felt_coupling_n_per_m) + " N/m, above the " +
+                                FiveDigits(renderable) + " N/m the device renders stably");
   }
 
   // The probe's start: clear of the face by the gap (or a thickness), over the tip or midspan.
@@ -83,9 +92,9 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
     out.trajectory = IsBuiltIn(device.trajectory) ? MakeBuiltInTrajectory(device.trajectory, shape)
                                                   : LoadCsvTrajectory(device.trajectory);
   } catch (const std::invalid_argument& e) {
-    throw CliInputError(std::string("device.trajectory: ") + e.what());
+    throw std::invalid_argument(std::string("device.trajectory: ") + e.what());
   }
   return out;
 }
 
-}  // namespace cosmems::internal
+}  // namespace cosmems

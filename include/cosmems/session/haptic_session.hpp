@@ -8,14 +8,14 @@
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scene/scene_forces.hpp"
-#include "haptic_settings.hpp"
+#include "cosmems/session/haptic_settings.hpp"
 
 namespace cosmems {
 class OpenHapticsDevice;
 class ScriptedDevice;
 }  // namespace cosmems
 
-namespace cosmems::internal {
+namespace cosmems {
 
 /// A haptic device, open, with the settings derived from its specs.
 struct OpenedDevice {
@@ -30,8 +30,8 @@ struct OpenedDevice {
 
 /// The device a scene's [device] asks for, open: a ScriptedDevice replaying its trajectory
 /// (paced when realtime = true) or an OpenHapticsDevice at the scene's rate. Throws
-/// std::runtime_error naming device.backend when the device does not open, CliInputError for
-/// settings the device cannot render.
+/// std::runtime_error naming device.backend when the device does not open,
+/// std::invalid_argument for settings the device cannot render.
 OpenedDevice OpenDevice(const Scene& scene);
 
 /// One touch of a scene's beam, built the same way for every program: the beam model of the
@@ -73,4 +73,4 @@ class HapticSession {
 extern template class HapticSession<2>;
 extern template class HapticSession<3>;
 
-}  // namespace cosmems::internal
+}  // namespace cosmems

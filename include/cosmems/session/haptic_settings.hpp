@@ -8,7 +8,7 @@
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scripted/trajectory.hpp"
 
-namespace cosmems::internal {
+namespace cosmems {
 
 /// How a haptic scene's hand meets its beam: the scaling, the probe and the stylus's script,
 /// from [device] with the defaults doc/scenes.md documents.
@@ -28,8 +28,8 @@ DeviceSpecs ScriptedSpecs(const Scene& scene);
 /// without a substrate) above the beam's upper face over the cantilever's tip or the bridge's
 /// midspan, where the device's frame has the point half a press above its origin; the built-in
 /// motions press 2.2 of those distances down (through the clearance, the gap, then a little into
-/// the contact). The trajectory is made for the scripted backend only. Throws CliInputError
-/// naming a [device] key whose value the device cannot render.
+/// the contact). The trajectory is made for the scripted backend only. Throws
+/// std::invalid_argument naming a [device] key whose value the device cannot render.
 HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs);
 
-}  // namespace cosmems::internal
+}  // namespace cosmems
