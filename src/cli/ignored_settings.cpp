@@ -6,7 +6,7 @@ namespace cosmems::internal {
 namespace {
 
 // The haptic analysis touches the beam with the probe alone (HapticSession builds the HapticBeam
-// without loads or damping); the modes it would reduce to are refused by the scene reader.
+// without loads); only its modal integrator takes the damping, as the modes' ratios.
 void AddHapticWarnings(const Scene& scene, const std::string& unchanged,
                        std::vector<std::string>& warnings) {
   if (!MakeLoadCase(scene).Empty()) {

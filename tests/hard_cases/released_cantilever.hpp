@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cosmems/beam/output_point.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/load_vector.hpp"
+#include "cosmems/beam/output_point.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "test_beams.hpp"

@@ -43,7 +43,8 @@ template <int Dim>
 class HapticSession {
  public:
   /// `device` must be open. `physics` sets the substeps and rho_inf; its tick is the period of
-  /// the scene's analysis.rate.
+  /// the scene's analysis.rate, and the scene's analysis.integrator = "modal" sets its modal
+  /// path (model.modes, damped by effects.damping).
   HapticSession(const Scene& scene, OpenedDevice device, HapticPhysicsOptions physics = {});
   ~HapticSession();
   HapticSession(const HapticSession&) = delete;
