@@ -3,34 +3,19 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/beam/nonlinear_force.hpp"
-#include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/surface/contact_state.hpp"
+#include "cosmems/surface/substrate_contact_model.hpp"
 
 namespace cosmems {
-
-struct ContactOptions {
-  double gap = 0.0;  ///< m, from the beam's undeformed lower face to the substrate
-  /// m: how close the faces come in contact (asperities, a native oxide). Keeps the surface
-  /// pressures, which grow without bound as the gap closes, finite on a beam lying down.
-  double separation = 0.0;
-  bool stiction = false;
-  double adhesion_energy = 0.0;  ///< work of adhesion Gamma [J/m^2], with stiction
-  double proximity = 0.0;        ///< m: a local gap below this is "near"; 0: a tenth of the gap
-  double tolerance = 0.0;        ///< m: the penetration accepted; 0: 1e-4 of the gap
-  /// The augmented-Lagrangian penalty per node, relative to the beam's largest u_y stiffness.
-  double penalty = 1e4;
-};
 
 /// The substrate as a unilateral constraint on the beam, with adhesion (stiction).
 ///
@@ -86,62 +71,21 @@ struct ContactOptions {
 /// the next step (the reference cantilever thrown at 1 m/s gained 14 % and 27 % over its first
 /// two impacts; removing the velocity alone still left 8 %).
 ///
-/// Evaluate(), Settle() and ProjectMotion() allocate nothing. The beam model must outlive the
-/// force.
+/// What never changes while the beam runs (the points, their shapes, the gap, the penalty, the mass
+/// factor) is a SubstrateContactModel, which several contacts may share; what a run changes (the
+/// multipliers, the stuck flags, the states and events, the compliance's workspace) is this
+/// object's own. Evaluate(), Settle() and ProjectMotion() allocate nothing. The beam model must
+/// outlive the force.
 template <int Dim>
 class SubstrateContact final : public NonlinearForce {
  public:
+  /// A contact with a model of its own.
   SubstrateContact(const BeamModel<Dim>& model, const ContactOptions& options)
-      : stiffness_(model.Stiffness()), units_(model.units()), options_(options) {
-    RequirePositive("gap", options.gap);
-    RequireWithin("separation", options.separation, 0.0, 0.5 * options.gap);
-    if (options.stiction) RequirePositive("adhesion_energy", options.adhesion_energy);
-    constexpr double kLargest = std::numeric_limits<double>::max();
-    RequireWithin("proximity", options.proximity, 0.0, kLargest);
-    RequireWithin("tolerance", options.tolerance, 0.0, kLargest);
-    RequireWithin("penalty", options.penalty, 10.0, 1e8);
-    const UnitSystem& u = model.units();
-    gap_ = (options.gap - options.separation) / u.length;
-    tolerance_ = (options.tolerance > 0.0 ? options.tolerance : 1e-4 * options.gap) / u.length;
-    proximity_ = (options.proximity > 0.0 ? options.proximity : 0.1 * options.gap) / u.length;
-    double largest = 0.0;
-    std::vector<int> point_of_node(static_cast<std::size_t>(model.NodeCount()), -1);
-    for (int node = 0; node < model.NodeCount(); ++node) {
-      const int w = model.dofs().Reduced(node, NodalDof::kUy);
-      if (w < 0) continue;  // a support never reaches the substrate
-      point_of_node[static_cast<std::size_t>(node)] = static_cast<int>(points_.size());
-      const int e = std::min(node, model.ElementCount() - 1);
-      Point point;
-      point.dof[0] = w;
-      point.shape[0] = 1.0;
-      point.node = node;
-      point.x = model.NodeX()[node];
-      point.width = model.description().elements[e].section.width / u.length;
-      const bool end = node == 0 || node == model.NodeCount() - 1;
-      point.slope = end ? model.dofs().Reduced(node, NodalDof::kRz) : -1;
-      points_.push_back(point);
-      largest = std::max(largest, stiffness_(w, w));
-    }
-    node_count_ = points_.size();
-    for (int e = 0; e < model.ElementCount(); ++e) {
-      Point point;
-      for (int node = 0; node < 2; ++node) {
-        point.dof[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUy);
-        point.dof[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRz);
-      }
-      if (point.dof[0] < 0 && point.dof[2] < 0) continue;  // between two supports
-      point.h = model.elements()[e].properties().length;
-      point.x = model.NodeX()[e];
-      point.ends = {point_of_node[static_cast<std::size_t>(e)],
-                    point_of_node[static_cast<std::size_t>(e) + 1]};
-      for (double xi : kInnerPoints) {
-        const std::array<double, 4> n = HermiteShapes(xi);
-        point.shape = {n[0], point.h * n[1], n[2], point.h * n[3]};
-        points_.push_back(point);
-      }
-    }
-    penalty_ = options.penalty * largest;
-    length_ = model.NodeX().back();
+      : SubstrateContact(std::make_shared<const SubstrateContactModel<Dim>>(model, options)) {}
+
+  /// A contact on a shared model: its state (multipliers, stuck flags, events) is its own.
+  explicit SubstrateContact(std::shared_ptr<const SubstrateContactModel<Dim>> model)
+      : model_(std::move(model)), points_(model_->points()), node_count_(model_->node_count()) {
     const std::size_t m = points_.size();
     lambda_.assign(m, 0.0);
     committed_lambda_.assign(m, 0.0);
@@ -151,18 +95,22 @@ class SubstrateContact final : public NonlinearForce {
     std::fill(placed_.begin() + static_cast<std::ptrdiff_t>(node_count_), placed_.end(), 0);
     committed_placed_ = placed_;
     node_state_.assign(node_count_, ContactState::kFree);
-    springs_ = stiffness_;
-    unit_ = Eigen::VectorXd::Zero(stiffness_.size());
+    const SymmetricBandMatrix& stiffness = model_->stiffness();
+    springs_ = stiffness;
+    unit_ = Eigen::VectorXd::Zero(stiffness.size());
     compliance_.Compute(springs_);  // sizes the factor's buffers, so that Settle() allocates none
-    mass_factor_.Compute(model.Mass(0));
-    columns_ = Eigen::MatrixXd::Zero(stiffness_.size(), static_cast<Eigen::Index>(m));
+    columns_ = Eigen::MatrixXd::Zero(stiffness.size(), static_cast<Eigen::Index>(m));
     schur_ = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(m));
     multipliers_ = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m));
     active_.assign(m, 0);
     held_set_.assign(m, 0);
   }
 
+  /// The constant part, to share with another contact.
+  const std::shared_ptr<const SubstrateContactModel<Dim>>& model() const { return model_; }
+
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
+    const double penalty = model_->penalty();
     for (std::size_t k = 0; k < points_.size(); ++k) {
       if (!Holds(k)) continue;
       const Point& point = points_[k];
@@ -176,7 +124,7 @@ class SubstrateContact final : public NonlinearForce {
         for (int b = a; b < 4; ++b) {
           if (point.dof[b] >= 0) {
             tangent.band().Add(point.dof[a], point.dof[b],
-                               penalty_ * point.shape[a] * point.shape[b]);
+                               penalty * point.shape[a] * point.shape[b]);
           }
         }
       }
@@ -188,18 +136,19 @@ class SubstrateContact final : public NonlinearForce {
     bool settled = true;
     for (std::size_t k = 0; k < points_.size(); ++k) {  // the multipliers' update
       const double g = Gap(points_[k], d);
-      if (-g > tolerance_) placed_[k] = 1;  // an element's point that went through starts to hold
+      if (-g > model_->tolerance())
+        placed_[k] = 1;  // an element's point that went through starts to hold
       if (!Holds(k)) continue;
       // Through the plane, or (unilateral) still pushing while clear of it by more than the
       // tolerance: a multiplier from a deeper iterate must not hold the beam up off the plane.
-      const bool clear_but_pushing = !stuck_[k] && g > tolerance_ && Reaction(k, g) > 0.0;
+      const bool clear_but_pushing = !stuck_[k] && g > model_->tolerance() && Reaction(k, g) > 0.0;
       const double violation = stuck_[k] ? std::abs(g) : -g;
-      if (violation > tolerance_ || clear_but_pushing) {
+      if (violation > model_->tolerance() || clear_but_pushing) {
         lambda_[k] = Reaction(k, g);
         settled = false;
       }
     }
-    if (!settled || !options_.stiction) return settled;
+    if (!settled || !model_->options().stiction) return settled;
     for (std::size_t k = 0; k < node_count_; ++k) {  // pressed nodes stick: same equilibrium
       if (Reaction(k, Gap(points_[k], d)) > 0.0) stuck_[k] = 1;
     }
@@ -224,8 +173,9 @@ class SubstrateContact final : public NonlinearForce {
       } else if (Touching(k, g)) {
         s = ContactState::kContact;
       } else {
-        s = g + options_.separation / units_.length < proximity_ ? ContactState::kNear
-                                                                 : ContactState::kFree;
+        s = g + model_->options().separation / model_->units().length < model_->proximity()
+                ? ContactState::kNear
+                : ContactState::kFree;
       }
       beam = std::max(beam, s);
     }
@@ -254,7 +204,7 @@ class SubstrateContact final : public NonlinearForce {
         active_[count++] = static_cast<int>(k);
       }
     }
-    if (count == 0 || mass_factor_.info() != Status::kOk) return;
+    if (count == 0 || model_->mass_factor().info() != Status::kOk) return;
     // M^-1 C^T and the factor of C M^-1 C^T depend on the held points alone: a stuck zone held
     // step after step reuses them.
     if (count != held_ ||
@@ -267,7 +217,7 @@ class SubstrateContact final : public NonlinearForce {
         for (int b = 0; b < 4; ++b) {
           if (point.dof[b] >= 0) column[point.dof[b]] = point.shape[b];
         }
-        mass_factor_.SolveInPlace(column);
+        model_->mass_factor().SolveInPlace(column);
         for (int i = 0; i < count; ++i) schur_(i, j) = Along(points_[active_[i]], column);
       }
       Eigen::Ref<Eigen::MatrixXd> schur = schur_.topLeftCorner(count, count);
@@ -307,27 +257,11 @@ class SubstrateContact final : public NonlinearForce {
     committed_stuck_ = stuck_;
   }
 
-  /// The displacement with every free node on the contact plane and flat (internal units): the
-  /// beam pressed down all along, a start for the solvers. The nodes sit the tolerance deep, so
-  /// that the contact holds them from the first iteration on (a node exactly on the plane is not
-  /// pressed, and a surface pressure alone would make the first Newton matrix indefinite).
-  Eigen::VectorXd PressedDisplacement() const {
-    Eigen::VectorXd d = Eigen::VectorXd::Zero(stiffness_.size());
-    for (std::size_t k = 0; k < node_count_; ++k) d[points_[k].dof[0]] = -gap_ - tolerance_;
-    return d;
-  }
+  /// The beam pressed down all along (SubstrateContactModel::PressedDisplacement).
+  Eigen::VectorXd PressedDisplacement() const { return model_->PressedDisplacement(); }
 
-  /// The largest penetration of the contact plane anywhere along the beam at d [m] (0 when none):
-  /// at the nodes and at the deepest point of each element's cubic.
-  double Penetration(const Eigen::VectorXd& d) const {
-    double deepest = 0.0;
-    for (std::size_t k = 0; k < node_count_; ++k) deepest = std::max(deepest, -Gap(points_[k], d));
-    // One cubic per element: its first point's.
-    for (std::size_t k = node_count_; k < points_.size(); k += kInnerPoints.size()) {
-      deepest = std::max(deepest, -DeepestGap(points_[k], d));
-    }
-    return deepest * units_.length;
-  }
+  /// The largest penetration of the contact plane at d [m] (SubstrateContactModel::Penetration).
+  double Penetration(const Eigen::VectorXd& d) const { return model_->Penetration(d); }
 
   /// The energy release rate [J/m^2] at stuck node k (an index as NodeState's) in the state d
   /// (reduced, internal units): the rate Settle() weighs against the work of adhesion at the edge
@@ -350,10 +284,10 @@ class SubstrateContact final : public NonlinearForce {
       if (node_state_[k] < ContactState::kContact) continue;
       if (first < 0.0) first = points_[k].x;
       if (k > 0 && Adjacent(k - 1, k) && node_state_[k - 1] >= ContactState::kContact) {
-        out.contact_length_m += (points_[k].x - points_[k - 1].x) * units_.length;
+        out.contact_length_m += (points_[k].x - points_[k - 1].x) * model_->units().length;
       }
     }
-    out.detached_length_m = (first < 0.0 ? length_ : first) * units_.length;
+    out.detached_length_m = (first < 0.0 ? model_->length() : first) * model_->units().length;
     if (out.Stuck()) out.shape = out.contact_length_m > 0.0 ? StuckShape::kS : StuckShape::kArc;
     return out;
   }
@@ -362,25 +296,11 @@ class SubstrateContact final : public NonlinearForce {
   /// committed step, from the first support on.
   int NodeCount() const { return static_cast<int>(node_count_); }
   ContactState NodeState(int k) const { return node_state_[Checked(k)]; }
-  double NodeX(int k) const { return points_[Checked(k)].x * units_.length; }  ///< m
+  double NodeX(int k) const { return points_[Checked(k)].x * model_->units().length; }  ///< m
   /// The penetration accepted [m], for tests and reports.
-  double tolerance() const { return tolerance_ * units_.length; }
+  double tolerance() const { return model_->tolerance() * model_->units().length; }
 
  private:
-  // A point the constraint holds: g = gap + shape . d[dof]. The nodes' first (u_y alone), then
-  // those inside the elements that can touch (the Hermite cubic of u_y and h theta_z at a fixed
-  // xi), each holding while placed_.
-  struct Point {
-    std::array<int, 4> dof{-1, -1, -1, -1};  ///< reduced indices (-1: supported)
-    std::array<double, 4> shape{};
-    int node = -1;       ///< node number along the beam (nodes)
-    double x = 0.0;      ///< internal units (nodes; an element's first node for its points)
-    double width = 0.0;  ///< internal units (nodes)
-    double h = 0.0;      ///< the element's length, internal units (elements)
-    std::array<int, 2> ends{-1, -1};  ///< the element's nodes' points (-1: a support)
-    int slope = -1;  ///< a free end's theta_z (reduced; -1: not an end, or its rotation held)
-  };
-
   // Whether point k holds: a node's always; an element's once placed, unless adhesion holds the
   // element at a node (a stuck node holds it both ways, and points between two stuck nodes would
   // hold the cubic at five places with four unknowns, whose multipliers never settle).
@@ -393,69 +313,14 @@ class SubstrateContact final : public NonlinearForce {
     return true;
   }
 
-  // Where an element is held between its nodes: its quarter points. A point held fixed never
-  // moves its multiplier to where it does not belong (a point following the cubic's deepest place
-  // pushed the element down elsewhere, and the stuck cantilever's release never settled).
-  static constexpr std::array<double, 3> kInnerPoints = {0.25, 0.5, 0.75};
-
-  // k as a node's point, or std::out_of_range.
-  std::size_t Checked(int k) const {
-    if (k < 0 || static_cast<std::size_t>(k) >= node_count_) {
-      throw std::out_of_range("contact node " + std::to_string(k) + " of " +
-                              std::to_string(node_count_));
-    }
-    return static_cast<std::size_t>(k);
-  }
-
-  static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
-    double sum = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      if (point.dof[a] >= 0) sum += point.shape[a] * x[point.dof[a]];
-    }
-    return sum;
-  }
-  double Gap(const Point& point, const Eigen::VectorXd& d) const { return gap_ + Along(point, d); }
-
-  // The gap where an element's cubic (that of any of its points) comes nearest the substrate
-  // inside the element; +inf when the cubic has no minimum there (the nodes hold its ends).
-  double DeepestGap(const Point& point, const Eigen::VectorXd& d) const {
-    std::array<double, 4> q{};  // w1, h theta1, w2, h theta2
-    for (int a = 0; a < 4; ++a) {
-      if (point.dof[a] >= 0) q[a] = (a % 2 ? point.h : 1.0) * d[point.dof[a]];
-    }
-    // dw/dxi = A xi^2 + B xi + C, from the Hermite cubics' derivatives.
-    const double A = 6.0 * q[0] + 3.0 * q[1] - 6.0 * q[2] + 3.0 * q[3];
-    const double B = -6.0 * q[0] - 4.0 * q[1] + 6.0 * q[2] - 2.0 * q[3];
-    const double C = q[1];
-    double best = std::numeric_limits<double>::infinity();
-    auto consider = [&](double xi) {
-      if (!(xi > 0.0 && xi < 1.0) || 2.0 * A * xi + B <= 0.0) return;  // not an inner minimum
-      const std::array<double, 4> n = HermiteShapes(xi);
-      best = std::min(best, gap_ + n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + n[3] * q[3]);
-    };
-    if (A == 0.0) {
-      if (B != 0.0) consider(-C / B);
-      return best;
-    }
-    const double discriminant = B * B - 4.0 * A * C;
-    if (discriminant < 0.0) return best;
-    // The roots without cancellation.
-    const double t = -0.5 * (B + std::copysign(std::sqrt(discriminant), B));
-    if (t != 0.0) consider(C / t);
-    consider(t / A);
-    return best;
-  }
-
   double Reaction(std::size_t k, double g) const {
-    const double p = lambda_[k] - penalty_ * g;
+    const double p = lambda_[k] - model_->penalty() * g;
     return stuck_[k] ? p : std::max(p, 0.0);
   }
 
   // Pressed onto the substrate, or lying on it within the tolerance.
-  bool Touching(std::size_t k, double g) const { return Reaction(k, g) > 0.0 || g <= tolerance_; }
-
-  bool Adjacent(std::size_t a, std::size_t b) const {
-    return points_[b].node == points_[a].node + 1;
+  bool Touching(std::size_t k, double g) const {
+    return Reaction(k, g) > 0.0 || g <= model_->tolerance();
   }
 
   // Releases the pulled stuck node whose energy release rate exceeds Gamma the most; returns
@@ -463,7 +328,7 @@ class SubstrateContact final : public NonlinearForce {
   bool Peel(const Eigen::VectorXd& d) {
     bool factored = false;
     std::size_t chosen = node_count_;
-    double worst = options_.adhesion_energy;  // G of the chosen node [J/m^2]
+    double worst = model_->options().adhesion_energy;  // G of the chosen node [J/m^2]
     for (std::size_t k = 0; k < node_count_; ++k) {
       if (!stuck_[k] || Reaction(k, Gap(points_[k], d)) >= 0.0) continue;  // pressed: no peel
       const double rate = ReleaseRate(k, d, factored);
@@ -495,7 +360,8 @@ class SubstrateContact final : public NonlinearForce {
     if (!factored && !FactorCompliance(d)) return kNone;
     factored = true;
     const double p = Reaction(k, Gap(point, d));
-    const double per_length = units_.force / units_.length;  // internal force / length to N/m
+    const double per_length =
+        model_->units().force / model_->units().length;  // internal force / length to N/m
     if (freed == 0.0) {  // a free end held alone: +inf if nothing but its own spring held it
       const NodeCompliance c = Compliance(k);
       if (!std::isfinite(c.deflection)) return std::numeric_limits<double>::infinity();
@@ -517,14 +383,15 @@ class SubstrateContact final : public NonlinearForce {
 
   // Factors K plus the springs of the active constraints; false if it is not definite.
   bool FactorCompliance(const Eigen::VectorXd& d) {
-    springs_.mutable_data() = stiffness_.data();
+    springs_.mutable_data() = model_->stiffness().data();
     for (std::size_t k = 0; k < points_.size(); ++k) {
       if (!Holds(k) || (!stuck_[k] && Reaction(k, Gap(points_[k], d)) <= 0.0)) continue;
       const Point& point = points_[k];
       for (int a = 0; a < 4; ++a) {
         for (int b = a; b < 4; ++b) {
           if (point.dof[a] >= 0 && point.dof[b] >= 0) {
-            springs_.Add(point.dof[a], point.dof[b], penalty_ * point.shape[a] * point.shape[b]);
+            springs_.Add(point.dof[a], point.dof[b],
+                         model_->penalty() * point.shape[a] * point.shape[b]);
           }
         }
       }
@@ -543,7 +410,7 @@ class SubstrateContact final : public NonlinearForce {
     const Point& point = points_[k];
     const Eigen::VectorXd& response = UnitResponse(point.dof[0]);
     const double c = response[point.dof[0]];
-    const double rest = 1.0 - penalty_ * c;
+    const double rest = 1.0 - model_->penalty() * c;
     if (!(rest > 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
     return {c / rest, point.slope >= 0 ? response[point.slope] / rest : 0.0};
   }
@@ -564,7 +431,8 @@ class SubstrateContact final : public NonlinearForce {
     const double saa = UnitResponse(wa)[wa], sab = unit_[wb];
     const double sbb = UnitResponse(wb)[wb];
     // (I - k S)^-1 = adj / det, and C = S (I - k S)^-1.
-    const double m11 = 1.0 - penalty_ * saa, m12 = -penalty_ * sab, m22 = 1.0 - penalty_ * sbb;
+    const double m11 = 1.0 - model_->penalty() * saa, m12 = -model_->penalty() * sab,
+                 m22 = 1.0 - model_->penalty() * sbb;
     const double det = m11 * m22 - m12 * m12;
     if (!(det > 0.0) || !(m11 > 0.0)) return std::numeric_limits<double>::infinity();
     const double caa = (saa * m22 - sab * m12) / det, cab = (sab * m11 - saa * m12) / det;
@@ -572,12 +440,18 @@ class SubstrateContact final : public NonlinearForce {
     return 0.5 * (caa * pa * pa + 2.0 * cab * pa * pb + cbb * pb * pb);
   }
 
-  const SymmetricBandMatrix& stiffness_;
-  UnitSystem units_;
-  ContactOptions options_;
-  double gap_ = 0.0, tolerance_ = 0.0, proximity_ = 0.0, penalty_ = 0.0, length_ = 0.0;
-  std::vector<Point> points_;
-  std::size_t node_count_ = 0;  ///< the nodes' points, first in points_
+  using Point = typename SubstrateContactModel<Dim>::Point;
+
+  double Gap(const Point& point, const Eigen::VectorXd& d) const { return model_->Gap(point, d); }
+  std::size_t Checked(int k) const { return model_->Checked(k); }
+  bool Adjacent(std::size_t a, std::size_t b) const { return model_->Adjacent(a, b); }
+  static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
+    return SubstrateContactModel<Dim>::Along(point, x);
+  }
+
+  std::shared_ptr<const SubstrateContactModel<Dim>> model_;
+  const std::vector<Point>& points_;  ///< the model's
+  std::size_t node_count_ = 0;        ///< the nodes' points, first in points_
   std::vector<double> lambda_, committed_lambda_;
   std::vector<char> stuck_, committed_stuck_;
   std::vector<char> placed_, committed_placed_;  ///< whether each point holds (nodes: always)
@@ -587,7 +461,6 @@ class SubstrateContact final : public NonlinearForce {
   SymmetricBandMatrix springs_;
   BandCholesky compliance_;
   Eigen::VectorXd unit_;
-  BandCholesky mass_factor_;
   Eigen::MatrixXd columns_, schur_;
   Eigen::VectorXd multipliers_;
   std::vector<int> active_;    ///< the points the projection holds
