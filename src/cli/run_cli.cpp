@@ -10,6 +10,7 @@
 #include "buckling_report.hpp"
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
+#include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "haptic_report.hpp"
 #include "modal_report.hpp"
@@ -148,6 +149,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   std::string show_name;
   CLI::App* show = app.add_subcommand("show", "Print an embedded scene as TOML, to edit");
   show->add_option("NAME", show_name, "The embedded scene")->required();
+  CLI::App* keys = app.add_subcommand(
+      "keys", "Print every scene key: what it accepts, its default, its meaning (markdown)");
 
   // CLI11 reports a mistyped command as "A subcommand is required"; name it instead.
   if (!args.empty() && !args.front().empty() && args.front().front() != '-') {
@@ -178,6 +181,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   try {
     if (scenes->parsed()) return ListScenes(out);
     if (show->parsed()) return ShowScene(show_name, out);
+    if (keys->parsed()) {
+      out << SceneKeyReference();
+      return kSuccess;
+    }
     return Run(request, out);
   } catch (const std::invalid_argument& error) {  // SceneError, CliInputError, core checks
     err << "cosmems: " << OneLine(error.what()) << "\n";

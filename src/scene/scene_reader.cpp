@@ -2,13 +2,14 @@
 
 #include <array>
 #include <cmath>
-#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "key_reader.hpp"
+#include "scene_keys.hpp"
 #include "scene_limits.hpp"
 #include "toml_field_reader.hpp"
 #include "toml_format.hpp"
@@ -16,223 +17,67 @@
 namespace cosmems::internal {
 namespace {
 
-constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge};
-constexpr std::array kTheories = {Theory::kLinear, Theory::kStretching, Theory::kCosserat};
-constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::kModal,
-                                       AnalysisType::kBuckling,  AnalysisType::kPullin,
-                                       AnalysisType::kTransient, AnalysisType::kRelease,
-                                       AnalysisType::kHaptic};
-constexpr std::array kDeviceBackends = {DeviceBackend::kScripted, DeviceBackend::kOpenHaptics};
-constexpr std::array kIntegrators = {Integrator::kNewmark, Integrator::kHht,
-                                     Integrator::kGeneralizedAlpha, Integrator::kCentralDifference,
-                                     Integrator::kModal};
-constexpr std::array kInitialStates = {InitialState::kRest, InitialState::kStatic};
-constexpr std::array kTimeFunctions = {TimeFunctionKind::kStep, TimeFunctionKind::kRamp,
-                                       TimeFunctionKind::kSine};
+// Reads `table` by `visit` (scene_keys.hpp), then refuses the keys it does not name.
+template <class Visit>
+void ReadTable(const TomlFieldReader& r, const std::string& table, Visit visit,
+               double length = 0.0) {
+  KeyReader reader(r, table, length);
+  visit(reader);
+  r.RejectUnknownKeys(table, reader.names());
+}
 
 SceneStructure ReadStructure(const TomlFieldReader& r) {
   r.RequireTable("structure");
-  r.RejectUnknownKeys("structure", {"kind", "length", "width", "thickness", "gap", "axial_load"});
   SceneStructure s;
-  s.kind = r.RequiredChoice("structure.kind", kStructureKinds, "structure kind");
-  s.length = r.RequiredPositive("structure.length", kLength);
-  s.width = r.RequiredPositive("structure.width", kLength);
-  s.thickness = r.RequiredPositive("structure.thickness", kLength);
-  s.gap = r.OptionalPositive("structure.gap", kLength);
-  s.axial_load = r.OptionalNumber("structure.axial_load", kForce).value_or(s.axial_load);
+  ReadTable(r, "structure", [&](auto& v) { VisitStructure(v, s); });
   return s;
 }
 
 SceneMaterial ReadMaterial(const TomlFieldReader& r) {
   r.RequireTable("material");
-  r.RejectUnknownKeys("material", {"young_modulus", "density", "poisson_ratio", "plate_modulus"});
   SceneMaterial m;
-  m.young_modulus = r.RequiredPositive("material.young_modulus", kYoungModulus);
-  m.density = r.RequiredPositive("material.density", kDensity);
-  m.poisson_ratio = r.Number("material.poisson_ratio", m.poisson_ratio);
-  r.Require(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5, "material.poisson_ratio",
-            "must lie in (-1, 0.5)");
-  m.plate_modulus = r.Boolean("material.plate_modulus", m.plate_modulus);
+  ReadTable(r, "material", [&](auto& v) { VisitMaterial(v, m); });
   return m;
 }
 
 SceneModel ReadModel(const TomlFieldReader& r) {
   SceneModel m;
-  if (!r.HasTable("model")) return m;
-  r.RejectUnknownKeys("model", {"theory", "dimension", "elements", "series_order", "modes"});
-  m.theory = r.OptionalChoice("model.theory", kTheories, "theory").value_or(m.theory);
-  m.dimension = r.Integer("model.dimension", m.dimension);
-  r.Require(m.dimension == 2 || m.dimension == 3, "model.dimension", "must be 2 or 3");
-  m.elements = r.Integer("model.elements", m.elements);
-  r.Require(m.elements >= 1, "model.elements", "must be at least 1");
-  r.Require(m.elements <= kMaxElements, "model.elements",
-            "must be at most " + std::to_string(kMaxElements));
-  m.series_order = r.Integer("model.series_order", m.series_order);
-  r.Require(m.series_order >= 0 && m.series_order <= kMaxSeriesOrder, "model.series_order",
-            "must lie in 0 ... " + std::to_string(kMaxSeriesOrder));
-  m.modes = r.Integer("model.modes", m.modes);
-  r.Require(m.modes >= 0, "model.modes", "must be non-negative");
-  r.Require(m.modes <= kMaxModes, "model.modes", "must be at most " + std::to_string(kMaxModes));
+  if (r.HasTable("model")) ReadTable(r, "model", [&](auto& v) { VisitModel(v, m); });
   return m;
-}
-
-// Each component within `bounds`.
-Eigen::Vector3d ReadVector3(const TomlFieldReader& r, const std::string& key,
-                            const Bounds& bounds) {
-  const std::optional<std::vector<double>> values = r.OptionalNumbers(key, 3);
-  if (!values) return Eigen::Vector3d::Zero();
-  for (std::size_t i = 0; i < values->size(); ++i) {
-    r.RequireWithin(key + "[" + std::to_string(i) + "]", (*values)[i], bounds);
-  }
-  return Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
-}
-
-// A parameter that only one choice takes: given beside another choice it is refused rather than
-// ignored, since it shows an intent that the run would not follow.
-std::optional<double> ReadParameterOf(const TomlFieldReader& r, const std::string& key, bool chosen,
-                                      const std::string& owner) {
-  const std::optional<double> value = r.OptionalNumber(key);
-  r.Require(!value || chosen, key, "only " + owner + " takes it");
-  return value;
-}
-
-// The time function's parameters are checked whatever the analysis: they describe the loads,
-// and a scene may switch to a transient analysis with --set.
-std::optional<SceneTimeFunction> ReadTimeFunction(const TomlFieldReader& r) {
-  const std::optional<TimeFunctionKind> kind =
-      r.OptionalChoice("loads.time_function", kTimeFunctions, "time function");
-  const TimeFunctionKind chosen = kind.value_or(TimeFunctionKind::kStep);
-  SceneTimeFunction f;
-  f.kind = chosen;
-  const std::optional<double> ramp_time = ReadParameterOf(
-      r, "loads.ramp_time", chosen == TimeFunctionKind::kRamp, "the \"ramp\" time function");
-  const std::optional<double> frequency = ReadParameterOf(
-      r, "loads.frequency", chosen == TimeFunctionKind::kSine, "the \"sine\" time function");
-  if (chosen == TimeFunctionKind::kRamp) {
-    r.Require(ramp_time.has_value(), "loads.time_function", "needs loads.ramp_time (s, > 0)");
-    r.Require(*ramp_time > 0.0, "loads.ramp_time", "must be positive");
-    r.RequireWithin("loads.ramp_time", *ramp_time, kTime);
-    f.ramp_time = *ramp_time;
-  }
-  if (chosen == TimeFunctionKind::kSine) {
-    r.Require(frequency.has_value(), "loads.time_function", "needs loads.frequency (Hz, > 0)");
-    r.Require(*frequency > 0.0, "loads.frequency", "must be positive");
-    r.RequireWithin("loads.frequency", *frequency, kFrequency);
-    f.frequency = *frequency;
-  }
-  if (!kind) return std::nullopt;
-  return f;
 }
 
 SceneLoads ReadLoads(const TomlFieldReader& r) {
   SceneLoads l;
   if (!r.HasTable("loads")) return l;
-  r.RejectUnknownKeys("loads", {"tip_force", "midspan_force", "distributed", "tip_moment",
-                                "time_function", "ramp_time", "frequency"});
-  l.tip_force = ReadVector3(r, "loads.tip_force", kForce);
-  l.midspan_force = ReadVector3(r, "loads.midspan_force", kForce);
-  l.distributed = ReadVector3(r, "loads.distributed", kForcePerLength);
-  l.tip_moment = ReadVector3(r, "loads.tip_moment", kMoment);
-  l.time_function = ReadTimeFunction(r);
+  // The time function first: its choice decides which of its parameters the loads may carry.
+  const std::optional<TimeFunctionKind> kind =
+      r.OptionalChoice("loads.time_function", kTimeFunctions, "time function");
+  // Named at the choice, where the scene (or --set) asked for the function.
+  if (kind == TimeFunctionKind::kRamp) {
+    r.Require(r.Find("loads.ramp_time") != nullptr, "loads.time_function",
+              "needs loads.ramp_time (s, > 0)");
+  }
+  if (kind == TimeFunctionKind::kSine) {
+    r.Require(r.Find("loads.frequency") != nullptr, "loads.time_function",
+              "needs loads.frequency (Hz, > 0)");
+  }
+  SceneTimeFunction f;
+  ReadTable(r, "loads",
+            [&](auto& v) { VisitLoads(v, l, f, kind.value_or(TimeFunctionKind::kStep)); });
+  if (kind) l.time_function = f;
   return l;
 }
 
-// A point of the beam axis, x in [0, length].
-std::optional<double> ReadPositionOnBeam(const TomlFieldReader& r, const std::string& key,
-                                         const SceneStructure& structure) {
-  const std::optional<double> x = r.OptionalNumber(key);
-  r.Require(!x || (*x >= 0.0 && *x <= structure.length), key,
-            "must lie on the beam, in [0, " + FormatNumber(structure.length) + "]");
-  return x;
-}
-
-// An effect table: present (as a table) or not, and enabled unless it says otherwise.
-bool HasEffect(const TomlFieldReader& r, const std::string& name,
-               std::initializer_list<std::string_view> parameters, bool& enabled) {
-  const std::string table = "effects." + name;
-  if (!r.HasTable(table)) return false;
-  r.RejectUnknownKeys(table, parameters);
-  enabled = r.Boolean(table + ".enabled", true);
-  return true;
-}
-
-std::optional<ContactEffect> ReadContact(const TomlFieldReader& r) {
-  ContactEffect c;
-  if (!HasEffect(r, "contact", {"enabled", "separation", "tolerance", "proximity"}, c.enabled)) {
-    return std::nullopt;
-  }
-  c.separation = r.OptionalNonNegative("effects.contact.separation", kLengthOrZero);
-  c.tolerance = r.OptionalPositive("effects.contact.tolerance", kLength);
-  c.proximity = r.OptionalPositive("effects.contact.proximity", kLength);
-  return c;
-}
-
-std::optional<StictionEffect> ReadStiction(const TomlFieldReader& r) {
-  StictionEffect s;
-  if (!HasEffect(r, "stiction", {"enabled", "adhesion_energy"}, s.enabled)) return std::nullopt;
-  s.adhesion_energy = r.OptionalNonNegative("effects.stiction.adhesion_energy", kAdhesionEnergy);
-  return s;
-}
-
-std::optional<ElectrostaticEffect> ReadElectrostatic(const TomlFieldReader& r,
-                                                     const SceneStructure& structure) {
-  ElectrostaticEffect s;
-  if (!HasEffect(r, "electrostatic",
-                 {"enabled", "voltage", "fringing", "electrode_start", "electrode_end"},
-                 s.enabled)) {
-    return std::nullopt;
-  }
-  s.voltage = r.OptionalNumber("effects.electrostatic.voltage", kVoltage);
-  s.fringing = r.Boolean("effects.electrostatic.fringing", s.fringing);
-  s.electrode_start = ReadPositionOnBeam(r, "effects.electrostatic.electrode_start", structure);
-  s.electrode_end = ReadPositionOnBeam(r, "effects.electrostatic.electrode_end", structure);
-  r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
-            "effects.electrostatic.electrode_end", "must exceed electrode_start");
-  return s;
-}
-
-std::optional<CasimirEffect> ReadCasimir(const TomlFieldReader& r) {
-  CasimirEffect c;
-  if (!HasEffect(r, "casimir", {"enabled"}, c.enabled)) return std::nullopt;
-  return c;
-}
-
-std::optional<VanDerWaalsEffect> ReadVanDerWaals(const TomlFieldReader& r) {
-  VanDerWaalsEffect v;
-  if (!HasEffect(r, "van_der_waals", {"enabled", "hamaker"}, v.enabled)) return std::nullopt;
-  v.hamaker = r.OptionalPositive("effects.van_der_waals.hamaker", kHamaker);
-  return v;
-}
-
-std::optional<DampingEffect> ReadDamping(const TomlFieldReader& r) {
-  DampingEffect d;
-  if (!HasEffect(r, "damping", {"enabled", "quality_factor", "rayleigh"}, d.enabled)) {
-    return std::nullopt;
-  }
-  d.quality_factor = r.OptionalPositive("effects.damping.quality_factor", kQualityFactor);
-  if (const auto rayleigh = r.OptionalNumbers("effects.damping.rayleigh", 2)) {
-    r.Require((*rayleigh)[0] >= 0.0 && (*rayleigh)[1] >= 0.0, "effects.damping.rayleigh",
-              "alpha and beta must be non-negative");
-    r.RequireWithin("effects.damping.rayleigh[0]", (*rayleigh)[0], kRayleighAlpha);
-    r.RequireWithin("effects.damping.rayleigh[1]", (*rayleigh)[1], kRayleighBeta);
-    r.Require(!d.quality_factor, "effects.damping.rayleigh",
-              "give quality_factor or rayleigh, not both");
-    d.rayleigh = std::array<double, 2>{(*rayleigh)[0], (*rayleigh)[1]};
-  }
-  // An enabled table that names no model would run undamped while the scene says otherwise.
-  r.Require(!d.enabled || d.quality_factor || d.rayleigh, "effects.damping",
-            "needs quality_factor or rayleigh = [alpha, beta]");
-  return d;
-}
-
-std::optional<SqueezeFilmEffect> ReadSqueezeFilm(const TomlFieldReader& r) {
-  SqueezeFilmEffect s;
-  if (!HasEffect(r, "squeeze_film", {"enabled", "viscosity", "mean_free_path"}, s.enabled)) {
-    return std::nullopt;
-  }
-  s.viscosity = r.OptionalPositive("effects.squeeze_film.viscosity", kViscosity);
-  s.mean_free_path = r.OptionalNonNegative("effects.squeeze_film.mean_free_path", kLengthOrZero);
-  return s;
+// An effect table: present (as a table) or not, read by its visit when present.
+template <class Effect, class Visit>
+std::optional<Effect> ReadEffect(const TomlFieldReader& r, const char* name, Visit visit,
+                                 double length = 0.0) {
+  const std::string table = std::string("effects.") + name;
+  if (!r.HasTable(table)) return std::nullopt;
+  Effect effect;
+  ReadTable(
+      r, table, [&](auto& v) { visit(v, effect); }, length);
+  return effect;
 }
 
 SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structure) {
@@ -242,101 +87,68 @@ SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structu
                       {"contact", "stiction", "electrostatic", "casimir", "van_der_waals",
                        "damping", "squeeze_film"},
                       "effect");
-  e.contact = ReadContact(r);
-  e.stiction = ReadStiction(r);
-  e.electrostatic = ReadElectrostatic(r, structure);
-  e.casimir = ReadCasimir(r);
-  e.van_der_waals = ReadVanDerWaals(r);
-  e.damping = ReadDamping(r);
-  e.squeeze_film = ReadSqueezeFilm(r);
-  return e;
-}
-
-// An integrator parameter: the integrator that takes it, its range and where it goes.
-struct IntegratorParameter {
-  const char* key;
-  Integrator owner;
-  double lower;
-  double upper;
-  const char* range;
-  double SceneAnalysis::*field;
-};
-
-void ReadTransient(const TomlFieldReader& r, SceneAnalysis& a) {
-  a.duration = r.RequiredPositive("analysis.duration", kTime);
-  a.time_step = r.RequiredPositive("analysis.time_step", kTime);
-  r.Require(a.time_step <= a.duration, "analysis.time_step",
-            "must not exceed analysis.duration = " + FormatNumber(a.duration));
-  r.Require(std::round(a.duration / a.time_step) <= kMaxSteps, "analysis.time_step",
-            "more than 1e8 steps over analysis.duration = " + FormatNumber(a.duration));
-  a.integrator =
-      r.OptionalChoice("analysis.integrator", kIntegrators, "integrator").value_or(a.integrator);
-  const std::array<IntegratorParameter, 4> parameters = {
-      {{"beta", Integrator::kNewmark, 0.0, 0.5, "[0, 0.5]", &SceneAnalysis::beta},
-       {"gamma", Integrator::kNewmark, 0.5, 1.0, "[0.5, 1]", &SceneAnalysis::gamma},
-       {"alpha", Integrator::kHht, 0.0, 1.0 / 3.0, "[0, 1/3]", &SceneAnalysis::alpha},
-       {"rho_inf", Integrator::kGeneralizedAlpha, 0.0, 1.0, "[0, 1]", &SceneAnalysis::rho_inf}}};
-  for (const IntegratorParameter& p : parameters) {
-    const std::string key = std::string("analysis.") + p.key;
-    const std::optional<double> value =
-        ReadParameterOf(r, key, a.integrator == p.owner,
-                        "the \"" + std::string(ToString(p.owner)) + "\" integrator");
-    if (!value) continue;
-    r.Require(*value >= p.lower && *value <= p.upper, key, std::string("must lie in ") + p.range);
-    a.*p.field = *value;
+  e.contact = ReadEffect<ContactEffect>(r, "contact",
+                                        [](auto& v, ContactEffect& c) { VisitContact(v, c); });
+  e.stiction = ReadEffect<StictionEffect>(r, "stiction",
+                                          [](auto& v, StictionEffect& s) { VisitStiction(v, s); });
+  e.electrostatic = ReadEffect<ElectrostaticEffect>(
+      r, "electrostatic", [](auto& v, ElectrostaticEffect& s) { VisitElectrostatic(v, s); },
+      structure.length);
+  if (e.electrostatic) {
+    const ElectrostaticEffect& s = *e.electrostatic;
+    r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
+              "effects.electrostatic.electrode_end", "must exceed electrode_start");
   }
-  a.initial =
-      r.OptionalChoice("analysis.initial", kInitialStates, "initial state").value_or(a.initial);
+  e.casimir = ReadEffect<CasimirEffect>(r, "casimir",
+                                        [](auto& v, CasimirEffect& c) { VisitCasimir(v, c); });
+  e.van_der_waals = ReadEffect<VanDerWaalsEffect>(
+      r, "van_der_waals", [](auto& v, VanDerWaalsEffect& w) { VisitVanDerWaals(v, w); });
+  e.damping = ReadEffect<DampingEffect>(r, "damping",
+                                        [](auto& v, DampingEffect& d) { VisitDamping(v, d); });
+  if (e.damping) {
+    const DampingEffect& d = *e.damping;
+    r.Require(!d.rayleigh || !d.quality_factor, "effects.damping.rayleigh",
+              "give quality_factor or rayleigh, not both");
+    // An enabled table that names no model would run undamped while the scene says otherwise.
+    r.Require(!d.enabled || d.quality_factor || d.rayleigh, "effects.damping",
+              "needs quality_factor or rayleigh = [alpha, beta]");
+  }
+  e.squeeze_film = ReadEffect<SqueezeFilmEffect>(
+      r, "squeeze_film", [](auto& v, SqueezeFilmEffect& s) { VisitSqueezeFilm(v, s); });
+  return e;
 }
 
 SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   r.RequireTable("analysis");
-  // The parameters of every documented analysis are known keys, so that a scene can carry
-  // them while it runs another type (switching with --set analysis.type=...); only the chosen
-  // analysis reads its own.
-  r.RejectUnknownKeys("analysis",
-                      {"type", "count", "duration", "time_step", "integrator", "initial", "beta",
-                       "gamma", "alpha", "rho_inf", "voltage_max", "rate"});
+  // The type and the integrator first: they decide which parameters are read and which refused.
+  const AnalysisType type = r.RequiredChoice("analysis.type", kAnalysisTypes, "analysis type");
+  const Integrator integrator =
+      type == AnalysisType::kTransient
+          ? r.OptionalChoice("analysis.integrator", kIntegrators, "integrator")
+                .value_or(Integrator::kNewmark)
+          : Integrator::kNewmark;
   SceneAnalysis a;
-  a.type = r.RequiredChoice("analysis.type", kAnalysisTypes, "analysis type");
-  if (a.type == AnalysisType::kModal) {
-    a.count = r.Integer("analysis.count", a.count);
-    r.Require(a.count >= 1, "analysis.count", "must be at least 1");
-    r.Require(a.count <= kMaxModes, "analysis.count",
-              "must be at most " + std::to_string(kMaxModes));
+  // The parameters of every analysis are known keys, so that a scene can carry them while it
+  // runs another type (switching with --set analysis.type=...); only the chosen type reads its
+  // own.
+  ReadTable(r, "analysis", [&](auto& v) { VisitAnalysis(v, a, type, integrator); });
+  if (type == AnalysisType::kTransient) {
+    r.Require(a.time_step <= a.duration, "analysis.time_step",
+              "must not exceed analysis.duration = " + FormatNumber(a.duration));
+    r.Require(std::round(a.duration / a.time_step) <= kMaxSteps, "analysis.time_step",
+              "more than 1e8 steps over analysis.duration = " + FormatNumber(a.duration));
   }
-  if (a.type == AnalysisType::kTransient) ReadTransient(r, a);
-  if (a.type == AnalysisType::kHaptic) {
-    a.duration = r.OptionalPositive("analysis.duration", kHapticDuration).value_or(0.0);
-    a.integrator = r.OptionalChoice("analysis.integrator", kIntegrators, "integrator")
-                       .value_or(Integrator::kGeneralizedAlpha);
-    r.Require(a.integrator == Integrator::kGeneralizedAlpha || a.integrator == Integrator::kModal,
-              "analysis.integrator",
-              "the haptic analysis steps by \"generalized-alpha\" (the full model) or \"modal\"");
-    a.rate = r.Number("analysis.rate", a.rate);
+  if (type == AnalysisType::kHaptic) {
     r.Require(a.rate == 500.0 || a.rate == 1000.0 || a.rate == 2000.0, "analysis.rate",
               "must be 500, 1000 or 2000 (Hz: the rates haptic devices run at)");
-  }
-  if (a.type == AnalysisType::kPullin) {
-    a.voltage_max = r.OptionalPositive("analysis.voltage_max", kVoltageMax);
   }
   return a;
 }
 
 std::optional<SceneDevice> ReadDevice(const TomlFieldReader& r) {
   if (!r.HasTable("device")) return std::nullopt;
-  r.RejectUnknownKeys("device", {"backend", "trajectory", "realtime", "position_scale",
-                                 "force_scale", "coupling_stiffness", "probe_radius"});
   SceneDevice d;
-  d.backend =
-      r.OptionalChoice("device.backend", kDeviceBackends, "device backend").value_or(d.backend);
-  d.trajectory = r.OptionalString("device.trajectory").value_or(d.trajectory);
-  r.Require(!d.trajectory.empty(), "device.trajectory", "must not be empty");
-  d.realtime = r.Boolean("device.realtime", d.realtime);
-  d.position_scale = r.OptionalPositive("device.position_scale", kScale);
-  d.force_scale = r.OptionalPositive("device.force_scale", kScale);
-  d.coupling_stiffness = r.OptionalPositive("device.coupling_stiffness", kStiffness);
-  d.probe_radius = r.OptionalPositive("device.probe_radius", kLength);
+  ReadTable(r, "device", [&](auto& v) { VisitDevice(v, d); });
   return d;
 }
 

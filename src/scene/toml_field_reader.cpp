@@ -15,7 +15,7 @@ std::string JoinKey(const std::string& table, std::string_view key) {
   return table.empty() ? FormatKey(key) : table + "." + FormatKey(key);
 }
 
-std::string PlainList(std::initializer_list<std::string_view> names) {
+std::string PlainList(const std::vector<std::string_view>& names) {
   std::string out;
   std::size_t i = 0;
   for (const std::string_view name : names) {
@@ -63,7 +63,7 @@ std::string TomlFieldReader::QuotedList(const std::vector<std::string_view>& nam
 }
 
 void TomlFieldReader::RejectUnknownKeys(const std::string& table,
-                                        std::initializer_list<std::string_view> known,
+                                        const std::vector<std::string_view>& known,
                                         std::string_view noun) const {
   const toml::table& entries = table.empty() ? root_ : *Find(table)->as_table();
   for (const auto& [key, value] : entries) {

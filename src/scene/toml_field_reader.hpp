@@ -3,7 +3,6 @@
 #include <toml++/toml.h>
 
 #include <array>
-#include <initializer_list>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -45,7 +44,7 @@ class TomlFieldReader {
 
   /// Throws "unknown NOUN (expected ...)" for the first key of `table` ("" is the root) that is
   /// not in `known`.
-  void RejectUnknownKeys(const std::string& table, std::initializer_list<std::string_view> known,
+  void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
                          std::string_view noun = "key") const;
 
   /// Whether `key` holds a table; throws when it holds anything else.

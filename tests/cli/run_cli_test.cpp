@@ -475,7 +475,7 @@ TEST(RunCliTest, UsageErrorsAreOneLineWithExitTwo) {
   ExpectContains(InvalidInput({"run", "cantilever", "--set"}), "--set");
   ExpectContains(InvalidInput({"run", "cantilever", "--out", ""}), "DIR must not be empty");
   EXPECT_EQ(InvalidInput({"frobnicate"}),
-            "cosmems: unknown command \"frobnicate\" (expected run, scenes, show)\n");
+            "cosmems: unknown command \"frobnicate\" (expected run, scenes, show, keys)\n");
 }
 
 TEST(RunCliTest, UnwritableOutIsInvalidInput) {

@@ -85,8 +85,14 @@ class SubstrateContact final : public NonlinearForce {
 
   /// A contact on a shared model: its state (multipliers, stuck flags, events) is its own.
   explicit SubstrateContact(std::shared_ptr<const SubstrateContactModel<Dim>> model)
-      : model_(std::move(model)), points_(model_->points()), node_count_(model_->node_count()) {
-    const std::size_t m = points_.size();
+      : model_(std::move(model)),
+        points_(model_->points().data()),
+        point_count_(model_->points().size()),
+        node_count_(model_->node_count()),
+        gap_(model_->gap()),
+        tolerance_(model_->tolerance()),
+        penalty_(model_->penalty()) {
+    const std::size_t m = point_count_;
     lambda_.assign(m, 0.0);
     committed_lambda_.assign(m, 0.0);
     stuck_.assign(m, 0);
@@ -110,8 +116,7 @@ class SubstrateContact final : public NonlinearForce {
   const std::shared_ptr<const SubstrateContactModel<Dim>>& model() const { return model_; }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
-    const double penalty = model_->penalty();
-    for (std::size_t k = 0; k < points_.size(); ++k) {
+    for (std::size_t k = 0; k < point_count_; ++k) {
       if (!Holds(k)) continue;
       const Point& point = points_[k];
       const double g = Gap(point, d);
@@ -124,7 +129,7 @@ class SubstrateContact final : public NonlinearForce {
         for (int b = a; b < 4; ++b) {
           if (point.dof[b] >= 0) {
             tangent.band().Add(point.dof[a], point.dof[b],
-                               penalty * point.shape[a] * point.shape[b]);
+                               penalty_ * point.shape[a] * point.shape[b]);
           }
         }
       }
@@ -134,16 +139,15 @@ class SubstrateContact final : public NonlinearForce {
 
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;
-    for (std::size_t k = 0; k < points_.size(); ++k) {  // the multipliers' update
+    for (std::size_t k = 0; k < point_count_; ++k) {  // the multipliers' update
       const double g = Gap(points_[k], d);
-      if (-g > model_->tolerance())
-        placed_[k] = 1;  // an element's point that went through starts to hold
+      if (-g > tolerance_) placed_[k] = 1;  // an element's point that went through starts to hold
       if (!Holds(k)) continue;
       // Through the plane, or (unilateral) still pushing while clear of it by more than the
       // tolerance: a multiplier from a deeper iterate must not hold the beam up off the plane.
-      const bool clear_but_pushing = !stuck_[k] && g > model_->tolerance() && Reaction(k, g) > 0.0;
+      const bool clear_but_pushing = !stuck_[k] && g > tolerance_ && Reaction(k, g) > 0.0;
       const double violation = stuck_[k] ? std::abs(g) : -g;
-      if (violation > model_->tolerance() || clear_but_pushing) {
+      if (violation > tolerance_ || clear_but_pushing) {
         lambda_[k] = Reaction(k, g);
         settled = false;
       }
@@ -157,7 +161,7 @@ class SubstrateContact final : public NonlinearForce {
 
   void Commit(const Eigen::VectorXd& d) override {
     ContactState beam = ContactState::kFree;
-    for (std::size_t k = node_count_; k < points_.size(); ++k) {
+    for (std::size_t k = node_count_; k < point_count_; ++k) {
       if (Holds(k) && Touching(k, Gap(points_[k], d))) {
         beam = ContactState::kContact;
       } else {  // lifted clear or adhered: let go, not to sit on the plane's kink unneeded
@@ -198,7 +202,7 @@ class SubstrateContact final : public NonlinearForce {
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     int count = 0;
-    for (std::size_t k = 0; k < points_.size(); ++k) {
+    for (std::size_t k = 0; k < point_count_; ++k) {
       if (!Holds(k)) continue;
       if (stuck_[k] || (Touching(k, Gap(points_[k], d)) && Along(points_[k], v) < 0.0)) {
         active_[count++] = static_cast<int>(k);
@@ -298,7 +302,7 @@ class SubstrateContact final : public NonlinearForce {
   ContactState NodeState(int k) const { return node_state_[Checked(k)]; }
   double NodeX(int k) const { return points_[Checked(k)].x * model_->units().length; }  ///< m
   /// The penetration accepted [m], for tests and reports.
-  double tolerance() const { return model_->tolerance() * model_->units().length; }
+  double tolerance() const { return tolerance_ * model_->units().length; }
 
  private:
   // Whether point k holds: a node's always; an element's once placed, unless adhesion holds the
@@ -314,14 +318,12 @@ class SubstrateContact final : public NonlinearForce {
   }
 
   double Reaction(std::size_t k, double g) const {
-    const double p = lambda_[k] - model_->penalty() * g;
+    const double p = lambda_[k] - penalty_ * g;
     return stuck_[k] ? p : std::max(p, 0.0);
   }
 
   // Pressed onto the substrate, or lying on it within the tolerance.
-  bool Touching(std::size_t k, double g) const {
-    return Reaction(k, g) > 0.0 || g <= model_->tolerance();
-  }
+  bool Touching(std::size_t k, double g) const { return Reaction(k, g) > 0.0 || g <= tolerance_; }
 
   // Releases the pulled stuck node whose energy release rate exceeds Gamma the most; returns
   // whether one was released.
@@ -384,14 +386,13 @@ class SubstrateContact final : public NonlinearForce {
   // Factors K plus the springs of the active constraints; false if it is not definite.
   bool FactorCompliance(const Eigen::VectorXd& d) {
     springs_.mutable_data() = model_->stiffness().data();
-    for (std::size_t k = 0; k < points_.size(); ++k) {
+    for (std::size_t k = 0; k < point_count_; ++k) {
       if (!Holds(k) || (!stuck_[k] && Reaction(k, Gap(points_[k], d)) <= 0.0)) continue;
       const Point& point = points_[k];
       for (int a = 0; a < 4; ++a) {
         for (int b = a; b < 4; ++b) {
           if (point.dof[a] >= 0 && point.dof[b] >= 0) {
-            springs_.Add(point.dof[a], point.dof[b],
-                         model_->penalty() * point.shape[a] * point.shape[b]);
+            springs_.Add(point.dof[a], point.dof[b], penalty_ * point.shape[a] * point.shape[b]);
           }
         }
       }
@@ -410,7 +411,7 @@ class SubstrateContact final : public NonlinearForce {
     const Point& point = points_[k];
     const Eigen::VectorXd& response = UnitResponse(point.dof[0]);
     const double c = response[point.dof[0]];
-    const double rest = 1.0 - model_->penalty() * c;
+    const double rest = 1.0 - penalty_ * c;
     if (!(rest > 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
     return {c / rest, point.slope >= 0 ? response[point.slope] / rest : 0.0};
   }
@@ -431,8 +432,7 @@ class SubstrateContact final : public NonlinearForce {
     const double saa = UnitResponse(wa)[wa], sab = unit_[wb];
     const double sbb = UnitResponse(wb)[wb];
     // (I - k S)^-1 = adj / det, and C = S (I - k S)^-1.
-    const double m11 = 1.0 - model_->penalty() * saa, m12 = -model_->penalty() * sab,
-                 m22 = 1.0 - model_->penalty() * sbb;
+    const double m11 = 1.0 - penalty_ * saa, m12 = -penalty_ * sab, m22 = 1.0 - penalty_ * sbb;
     const double det = m11 * m22 - m12 * m12;
     if (!(det > 0.0) || !(m11 > 0.0)) return std::numeric_limits<double>::infinity();
     const double caa = (saa * m22 - sab * m12) / det, cab = (sab * m11 - saa * m12) / det;
@@ -442,7 +442,7 @@ class SubstrateContact final : public NonlinearForce {
 
   using Point = typename SubstrateContactModel<Dim>::Point;
 
-  double Gap(const Point& point, const Eigen::VectorXd& d) const { return model_->Gap(point, d); }
+  double Gap(const Point& point, const Eigen::VectorXd& d) const { return gap_ + Along(point, d); }
   std::size_t Checked(int k) const { return model_->Checked(k); }
   bool Adjacent(std::size_t a, std::size_t b) const { return model_->Adjacent(a, b); }
   static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
@@ -450,8 +450,12 @@ class SubstrateContact final : public NonlinearForce {
   }
 
   std::shared_ptr<const SubstrateContactModel<Dim>> model_;
-  const std::vector<Point>& points_;  ///< the model's
-  std::size_t node_count_ = 0;        ///< the nodes' points, first in points_
+  // The model's points and the constants the loops read, held here: one load each rather than two
+  // through the shared pointer (the release measured 6 % slower without).
+  const Point* points_;
+  std::size_t point_count_;
+  std::size_t node_count_;            ///< the nodes' points, first in points_
+  double gap_, tolerance_, penalty_;  ///< internal units
   std::vector<double> lambda_, committed_lambda_;
   std::vector<char> stuck_, committed_stuck_;
   std::vector<char> placed_, committed_placed_;  ///< whether each point holds (nodes: always)

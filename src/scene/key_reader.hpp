@@ -1,0 +1,155 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "scene_keys.hpp"
+#include "toml_field_reader.hpp"
+#include "toml_format.hpp"
+
+namespace cosmems::internal {
+
+/// Reads and validates the keys of one table as scene_keys.hpp describes them, into the fields
+/// the visit names, and keeps their names. Every failure is a SceneError naming the key and its
+/// value.
+class KeyReader {
+ public:
+  /// `table`: the dotted table ("effects.contact"); `length`: the beam's, for Position keys.
+  KeyReader(const TomlFieldReader& r, std::string table, double length = 0.0)
+      : r_(r), table_(std::move(table)), length_(length) {}
+
+  /// The keys the visit named, each once: those the table may hold.
+  const std::vector<std::string_view>& names() const { return names_; }
+
+  void Scope(const char* owner, bool chosen, Unchosen unchosen) {
+    owner_ = owner;
+    chosen_ = chosen;
+    unchosen_ = unchosen;
+  }
+
+  void Required(const char* name, double& field, const NumberRule& rule, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const std::optional<double> value = Read(key, rule);
+    if (!value) r_.FailMissing(key);
+    field = *value;
+  }
+  void Number(const char* name, double& field, const NumberRule& rule, const char*) {
+    if (!Reads(name)) return;
+    field = Read(Key(name), rule).value_or(field);
+  }
+  void Number(const char* name, std::optional<double>& field, const NumberRule& rule, const char*,
+              const char*) {
+    if (!Reads(name)) return;
+    field = Read(Key(name), rule);
+  }
+  void Integer(const char* name, int& field, const IntegerRange& range, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    field = r_.Integer(key, field);
+    if (range.upper == range.lower + 1) {
+      r_.Require(field == range.lower || field == range.upper, key,
+                 "must be " + std::to_string(range.lower) + " or " + std::to_string(range.upper));
+    }
+    r_.Require(field >= range.lower, key,
+               range.lower == 0 ? "must be non-negative"
+                                : "must be at least " + std::to_string(range.lower));
+    r_.Require(field <= range.upper, key, "must be at most " + std::to_string(range.upper));
+  }
+  void Flag(const char* name, bool& field, const char*) {
+    if (Reads(name)) field = r_.Boolean(Key(name), field);
+  }
+  template <class Enum, std::size_t N>
+  void Choice(const char* name, Enum& field, const std::array<Enum, N>& options,
+              std::string_view what, const char*) {
+    if (Reads(name)) field = r_.OptionalChoice(Key(name), options, what).value_or(field);
+  }
+  template <class Enum, std::size_t N>
+  void RequiredChoice(const char* name, Enum& field, const std::array<Enum, N>& options,
+                      std::string_view what, const char*) {
+    if (Reads(name)) field = r_.RequiredChoice(Key(name), options, what);
+  }
+  void Text(const char* name, std::string& field, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    field = r_.OptionalString(key).value_or(field);
+    r_.Require(!field.empty(), key, "must not be empty");
+  }
+  void Vector(const char* name, Eigen::Vector3d& field, const Bounds& bounds, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const std::optional<std::vector<double>> values = r_.OptionalNumbers(key, 3);
+    if (!values) return;
+    for (std::size_t i = 0; i < values->size(); ++i) {
+      r_.RequireWithin(key + "[" + std::to_string(i) + "]", (*values)[i], bounds);
+    }
+    field = Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
+  }
+  void Pair(const char* name, std::optional<std::array<double, 2>>& field, const Bounds& first,
+            const Bounds& second, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const std::optional<std::vector<double>> values = r_.OptionalNumbers(key, 2);
+    if (!values) return;
+    const double a = (*values)[0], b = (*values)[1];
+    r_.Require(a >= 0.0 && b >= 0.0, key, "each must be non-negative");
+    r_.RequireWithin(key + "[0]", a, first);
+    r_.RequireWithin(key + "[1]", b, second);
+    field = std::array<double, 2>{a, b};
+  }
+  void Position(const char* name, std::optional<double>& field, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    field = r_.OptionalNumber(key);
+    r_.Require(!field || (*field >= 0.0 && *field <= length_), key,
+               "must lie on the beam, in [0, " + FormatNumber(length_) + "]");
+  }
+
+ private:
+  std::string Key(const char* name) const { return table_ + "." + name; }
+
+  // Whether the key is read: its owner chosen; otherwise skipped, or refused when given. Every
+  // key asked about is a known one.
+  bool Reads(const char* name) {
+    if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(name);
+    if (chosen_) return true;
+    if (unchosen_ == Unchosen::kRefused) {
+      r_.Require(r_.Find(Key(name)) == nullptr, Key(name),
+                 std::string("only ") + owner_ + " takes it");
+    }
+    return false;
+  }
+
+  std::optional<double> Read(const std::string& key, const NumberRule& rule) const {
+    const std::optional<double> value = r_.OptionalNumber(key);
+    if (!value) return value;
+    if (rule.sign == Sign::kPositive) r_.Require(*value > 0.0, key, "must be positive");
+    if (rule.sign == Sign::kNonNegative) r_.Require(*value >= 0.0, key, "must be non-negative");
+    if (rule.open) {
+      r_.Require(*value > rule.bounds.lower && *value < rule.bounds.upper, key,
+                 "must lie in (" + FormatNumber(rule.bounds.lower) + ", " +
+                     FormatNumber(rule.bounds.upper) + ")");
+    } else if (rule.range != nullptr) {
+      r_.Require(*value >= rule.bounds.lower && *value <= rule.bounds.upper, key,
+                 std::string("must lie in ") + rule.range);
+    } else {
+      r_.RequireWithin(key, *value, rule.bounds);
+    }
+    return value;
+  }
+
+  const TomlFieldReader& r_;
+  std::string table_;
+  double length_;
+  const char* owner_ = "";
+  bool chosen_ = true;
+  Unchosen unchosen_ = Unchosen::kSkipped;
+  std::vector<std::string_view> names_;
+};
+
+}  // namespace cosmems::internal

@@ -1,0 +1,152 @@
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cosmems/scene/scene_key_reference.hpp"
+#include "scene_keys.hpp"
+#include "toml_format.hpp"
+
+namespace cosmems {
+namespace internal {
+namespace {
+
+// A markdown row per key of one table, from its visit on a default scene.
+class KeyReference {
+ public:
+  KeyReference(std::string& out, std::string table) : out_(out), table_(std::move(table)) {}
+
+  void Scope(const char* owner, bool, Unchosen unchosen) {
+    scope_ = std::string(unchosen == Unchosen::kRefused ? "only " : "with ") + owner + ": ";
+  }
+
+  void Required(const char* name, double&, const NumberRule& rule, const char* meaning) {
+    Row(name, Accepts(rule), "required", meaning);
+  }
+  void Number(const char* name, double& field, const NumberRule& rule, const char* meaning) {
+    Row(name, Accepts(rule), FormatNumber(field), meaning);
+  }
+  void Number(const char* name, std::optional<double>&, const NumberRule& rule,
+              const char* fallback, const char* meaning) {
+    Row(name, Accepts(rule), fallback, meaning);
+  }
+  void Integer(const char* name, int& field, const IntegerRange& range, const char* meaning) {
+    const std::string accepts =
+        range.upper == range.lower + 1
+            ? std::to_string(range.lower) + " or " + std::to_string(range.upper)
+            : "integer, " + std::to_string(range.lower) + " … " + std::to_string(range.upper);
+    Row(name, accepts, std::to_string(field), meaning);
+  }
+  void Flag(const char* name, bool& field, const char* meaning) {
+    Row(name, "`true` \\| `false`", field ? "`true`" : "`false`", meaning);
+  }
+  template <class Enum, std::size_t N>
+  void Choice(const char* name, Enum& field, const std::array<Enum, N>& options, std::string_view,
+              const char* meaning) {
+    Row(name, Choices(options), std::string("`\"") + ToString(field) + "\"`", meaning);
+  }
+  template <class Enum, std::size_t N>
+  void RequiredChoice(const char* name, Enum&, const std::array<Enum, N>& options, std::string_view,
+                      const char* meaning) {
+    Row(name, Choices(options), "required", meaning);
+  }
+  void Text(const char* name, std::string& field, const char* meaning) {
+    Row(name, "a non-empty string", "`\"" + field + "\"`", meaning);
+  }
+  void Vector(const char* name, Eigen::Vector3d&, const Bounds& bounds, const char* meaning) {
+    Row(name, "`[x, y, z]`, each " + Range(bounds), "`[0, 0, 0]`", meaning);
+  }
+  void Pair(const char* name, std::optional<std::array<double, 2>>&, const Bounds& first,
+            const Bounds& second, const char* meaning) {
+    Row(name, "`[a, b]`: " + Range(first) + "; " + Range(second), "none", meaning);
+  }
+  void Position(const char* name, std::optional<double>&, const char* meaning) {
+    Row(name, "0 … `structure.length` m", "see meaning", meaning);
+  }
+
+ private:
+  static std::string Range(const Bounds& b) {
+    const std::string unit = *b.unit != '\0' ? std::string(" ") + b.unit : "";
+    return FormatNumber(b.lower) + " … " + FormatNumber(b.upper) + unit;
+  }
+  static std::string Accepts(const NumberRule& rule) {
+    const std::string unit = *rule.bounds.unit != '\0' ? std::string(" ") + rule.bounds.unit : "";
+    std::string range = Range(rule.bounds);
+    if (rule.open) {
+      range = "(" + FormatNumber(rule.bounds.lower) + ", " + FormatNumber(rule.bounds.upper) + ")" +
+              unit;
+    } else if (rule.range != nullptr) {
+      range = std::string(rule.range) + unit;
+    }
+    switch (rule.sign) {
+      case Sign::kPositive:
+        return "> 0, " + range;
+      case Sign::kNonNegative:
+        return "≥ 0, " + range;
+      case Sign::kAny:
+        break;
+    }
+    return range;
+  }
+  template <class Enum, std::size_t N>
+  static std::string Choices(const std::array<Enum, N>& options) {
+    std::string out;
+    for (std::size_t i = 0; i < N; ++i) {
+      out += (i > 0 ? " \\| `\"" : "`\"") + std::string(ToString(options[i])) + "\"`";
+    }
+    return out;
+  }
+  void Row(const char* name, const std::string& accepts, const std::string& fallback,
+           const char* meaning) {
+    out_ += "| `" + table_ + "." + name + "` | " + accepts + " | " + fallback + " | " + scope_ +
+            meaning + " |\n";
+  }
+
+  std::string& out_;
+  std::string table_;
+  std::string scope_;
+};
+
+template <class Visit>
+void Table(std::string& out, const char* table, Visit visit) {
+  KeyReference reference(out, table);
+  visit(reference);
+}
+
+}  // namespace
+}  // namespace internal
+
+std::string SceneKeyReference() {
+  using namespace internal;
+  Scene s;
+  SceneTimeFunction f;
+  ContactEffect contact;
+  StictionEffect stiction;
+  ElectrostaticEffect electrostatic;
+  CasimirEffect casimir;
+  VanDerWaalsEffect van_der_waals;
+  DampingEffect damping;
+  SqueezeFilmEffect squeeze_film;
+  SceneDevice device;
+  std::string out = "| key | accepts | default | meaning |\n|---|---|---|---|\n";
+  Table(out, "structure", [&](auto& v) { VisitStructure(v, s.structure); });
+  Table(out, "material", [&](auto& v) { VisitMaterial(v, s.material); });
+  Table(out, "model", [&](auto& v) { VisitModel(v, s.model); });
+  Table(out, "loads", [&](auto& v) { VisitLoads(v, s.loads, f, f.kind); });
+  Table(out, "effects.contact", [&](auto& v) { VisitContact(v, contact); });
+  Table(out, "effects.stiction", [&](auto& v) { VisitStiction(v, stiction); });
+  Table(out, "effects.electrostatic", [&](auto& v) { VisitElectrostatic(v, electrostatic); });
+  Table(out, "effects.casimir", [&](auto& v) { VisitCasimir(v, casimir); });
+  Table(out, "effects.van_der_waals", [&](auto& v) { VisitVanDerWaals(v, van_der_waals); });
+  Table(out, "effects.damping", [&](auto& v) { VisitDamping(v, damping); });
+  Table(out, "effects.squeeze_film", [&](auto& v) { VisitSqueezeFilm(v, squeeze_film); });
+  Table(out, "analysis", [&](auto& v) {
+    // As a transient sees them: another integrator's parameters refused.
+    VisitAnalysis(v, s.analysis, AnalysisType::kTransient, s.analysis.integrator);
+  });
+  Table(out, "device", [&](auto& v) { VisitDevice(v, device); });
+  return out;
+}
+
+}  // namespace cosmems
