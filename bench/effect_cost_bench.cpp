@@ -5,6 +5,8 @@
 // none the linear fast path runs.
 //   BM_BareLinearStep      the linear integrator made directly, with no scene layer at all
 //   BM_EffectStep/none     the same beam through the scene layer with no effect declared
+//   BM_EffectStep/contact_idle contact declared, the beam ringing under the scene's small tip
+//                          force far above the substrate (idle steps)
 //   BM_EffectStep/<effect> one effect declared; the tip force presses the beam onto the
 //                          substrate for contact and stiction (2x the force that closes the gap)
 // The per-step cost is the mean over many steps after 2000 steps of settling.
@@ -77,6 +79,8 @@ void BM_EffectStep(benchmark::State& state, std::vector<std::string> sets) {
 const std::string kPressed = "loads.tip_force=[0.0, -3.4e-6, 0.0]";
 BENCHMARK_CAPTURE(BM_EffectStep, none, {});
 BENCHMARK_CAPTURE(BM_EffectStep, contact, {"effects.contact.enabled=true", kPressed});
+// Declared, but the beam rings far above the substrate: the idle steps of the linear structure.
+BENCHMARK_CAPTURE(BM_EffectStep, contact_idle, {"effects.contact.enabled=true"});
 BENCHMARK_CAPTURE(BM_EffectStep, stiction, {"effects.stiction.adhesion_energy=0.02", kPressed});
 BENCHMARK_CAPTURE(BM_EffectStep, electrostatic_10V, {"effects.electrostatic.voltage=10.0"});
 BENCHMARK_CAPTURE(BM_EffectStep, casimir, {"effects.casimir.enabled=true"});

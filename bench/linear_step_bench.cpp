@@ -1,24 +1,64 @@
-// Per-step cost of the linear fast path (factor once, back-solve per step; average
-// acceleration, undamped) against element count, for each factorisation: the measurements
-// behind SpdSolver's automatic choice.
+// Per-step cost of the linear fast path (factor once, back-solve per step;
+// average acceleration, undamped) against element count, for each
+// factorisation: the measurements behind SpdSolver's automatic choice. The band
+// runs also report their operation count and its time on this machine
+// (bench/flop_rate.hpp) and, up to 100 elements, the time of the same step with
+// dense LLT (`dense_ns`, `x_dense`): the yardsticks of a step at the speed of
+// its arithmetic.
+#include <algorithm>
+#include <chrono>
+
 #include "cosmems/time/linear_newmark_integrator.hpp"
+#include "flop_rate.hpp"
 #include "reference_beam.hpp"
 #include "step_extremes.hpp"
 
 namespace cosmems {
 namespace {
 
+// The integrator of the reference cantilever's step by `solver`, started under
+// a uniform load.
+template <int Dim>
+LinearNewmarkIntegrator MakeStep(const BeamModel<Dim>& model, SpdSolverKind solver,
+                                 const Eigen::VectorXd& f) {
+  const double period = 14.5e-6 / model.units().time;  // f1 = 68.8 kHz
+  LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {},
+                                     GeneralizedAlphaParameters::Newmark(0.25, 0.5), period / 20,
+                                     solver);
+  const int n = model.FreeDofCount();
+  (void)integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f);
+  return integrator;
+}
+
+// ns per step of `integrator` over `steps` steps.
+double TimeSteps(LinearNewmarkIntegrator& integrator, const Eigen::VectorXd& f, long steps) {
+  const auto start = std::chrono::steady_clock::now();
+  for (long i = 0; i < steps; ++i) {
+    const Status status = integrator.Step(f);
+    benchmark::DoNotOptimize(status);
+    benchmark::DoNotOptimize(integrator.displacement().data());
+  }
+  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
+             .count() /
+         static_cast<double>(steps);
+}
+
+// The band step's floating-point operations per unknown, as the code runs them:
+// the row product with K over the padded band (2 (2W + 1)), the two sweeps (4W)
+// and the pivots (1), Newmark's updates of d, v and the next product's vector
+// (6 + 4 + 4). Average acceleration without damping needs no product with M.
+double BandStepFlops(int n, int bandwidth) {
+  return n * (2.0 * (2 * bandwidth + 1) + 4.0 * bandwidth + 1.0 + 14.0);
+}
+
 template <int Dim, SpdSolverKind kSolver>
 void BM_LinearNewmarkStep(benchmark::State& state) {
   const BeamModel<Dim> model(
       bench::ReferenceBeam(StructureKind::kCantilever, static_cast<int>(state.range(0)), 0));
   const int n = model.FreeDofCount();
-  const double period = 14.5e-6 / model.units().time;  // f1 = 68.8 kHz
-  LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {},
-                                     GeneralizedAlphaParameters::Newmark(0.25, 0.5), period / 20,
-                                     kSolver);
   const Eigen::VectorXd f = Eigen::VectorXd::Constant(n, 1e-4);
-  if (integrator.Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n), f) != Status::kOk) {
+  LinearNewmarkIntegrator integrator = MakeStep(model, kSolver, f);
+  if (integrator.info() != Status::kOk) {
     state.SkipWithError("initialisation failed");
     return;
   }
@@ -27,9 +67,21 @@ void BM_LinearNewmarkStep(benchmark::State& state) {
     benchmark::DoNotOptimize(status);
     benchmark::DoNotOptimize(integrator.displacement().data());
   };
+  const auto start = std::chrono::steady_clock::now();
   for (auto _ : state) step();
+  const double step_ns =
+      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+      static_cast<double>(state.iterations());
   bench::RecordStepExtremes(state, step);
   state.counters["dofs"] = n;
+  if (kSolver != SpdSolverKind::kBand) return;
+  bench::RecordArithmetic(state, BandStepFlops(n, model.Stiffness().bandwidth()), step_ns);
+  if (state.range(0) > 100) return;
+  LinearNewmarkIntegrator dense = MakeStep(model, SpdSolverKind::kDense, f);
+  const long steps = std::max<long>(1000, static_cast<long>(state.iterations()) / 4);
+  const double dense_ns = TimeSteps(dense, f, steps);
+  state.counters["dense_ns"] = dense_ns;
+  state.counters["x_dense"] = step_ns / dense_ns;
 }
 
 void Small(benchmark::internal::Benchmark* b) {

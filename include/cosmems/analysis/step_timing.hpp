@@ -5,11 +5,13 @@
 
 namespace cosmems {
 
-/// Median, 99th percentile and maximum of per-step compute times [us].
+/// Median, 99th percentile and maximum of per-step compute times [us], each sample the time per
+/// step of `batch` steps timed together (1: every step timed alone).
 struct StepTiming {
   double median_us = 0.0;
   double p99_us = 0.0;
   double max_us = 0.0;
+  long batch = 1;
 
   static StepTiming From(std::vector<double> samples_us) {
     StepTiming t;

@@ -35,6 +35,12 @@ class ForceSum final : public NonlinearForce {
     return true;
   }
 
+  bool Idle(const Eigen::VectorXd& d) const override {
+    for (const NonlinearForce* f : forces_) {
+      if (!f->Idle(d)) return false;
+    }
+    return true;
+  }
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;
     for (NonlinearForce* f : forces_) settled = f->Settle(d) && settled;

@@ -32,6 +32,9 @@ class ForceTuple final : public NonlinearForce {
         },
         forces_);
   }
+  bool Idle(const Eigen::VectorXd& d) const override {
+    return std::apply([&](const auto&... f) { return (f.Idle(d) && ...); }, forces_);
+  }
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;  // every member settles, even after one has changed its state
     std::apply([&](auto&... f) { ((settled = f.Settle(d) && settled), ...); }, forces_);

@@ -151,6 +151,10 @@ class ProbeContact final : public NonlinearForce {
     return true;
   }
 
+  /// Idle: out of reach, or clear of every face (the spring, zero at contact, then stays zero
+  /// around d).
+  bool Idle(const Eigen::VectorXd& d) const override { return !reach_ || Pushing(d).second < 0.0; }
+
   /// The step ending at d is accepted: the face pushing there is held while contact lasts.
   void Commit(const Eigen::VectorXd& d) override {
     if (!reach_) {

@@ -137,6 +137,17 @@ class SubstrateContact final : public NonlinearForce {
     return true;
   }
 
+  // Idle: no stuck node, and every point (placed or not) clear of the plane by more than the
+  // tolerance and not pushed (its multiplier below k g). Evaluate() then adds nothing, Settle()
+  // places and updates nothing, ProjectMotion() holds nothing; Commit() still counts the states.
+  bool Idle(const Eigen::VectorXd& d) const override {
+    for (std::size_t k = 0; k < point_count_; ++k) {
+      const double g = Gap(points_[k], d);
+      if (!(g > tolerance_) || stuck_[k] || lambda_[k] > penalty_ * g) return false;
+    }
+    return true;
+  }
+
   bool Settle(const Eigen::VectorXd& d) override {
     bool settled = true;
     for (std::size_t k = 0; k < point_count_; ++k) {  // the multipliers' update

@@ -51,6 +51,9 @@ class SubstrateContactModel {
     double h = 0.0;      ///< the element's length, internal units (elements)
     std::array<int, 2> ends{-1, -1};  ///< the element's nodes' points (-1: a support)
     int slope = -1;  ///< a free end's theta_z (reduced; -1: not an end, or its rotation held)
+    /// shape and dof with the supported entries as weight 0 on index 0: Along() without a branch
+    std::array<int, 4> gather{0, 0, 0, 0};
+    std::array<double, 4> weight{};
   };
 
   /// Where an element is held between its nodes: its quarter points. A point held fixed never
@@ -107,6 +110,12 @@ class SubstrateContactModel {
         points_.push_back(point);
       }
     }
+    for (Point& point : points_) {
+      for (int a = 0; a < 4; ++a) {
+        point.gather[a] = std::max(point.dof[a], 0);
+        point.weight[a] = point.dof[a] >= 0 ? point.shape[a] : 0.0;
+      }
+    }
     penalty_ = options.penalty * largest;
     length_ = model.NodeX().back();
     mass_factor_.Compute(model.Mass(0));
@@ -130,12 +139,10 @@ class SubstrateContactModel {
   double penalty() const { return penalty_; }
   double length() const { return length_; }
 
-  /// shape . x[dof] for a point.
+  /// shape . x[dof] for a point, the supported entries left out (as weight 0).
   static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
     double sum = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      if (point.dof[a] >= 0) sum += point.shape[a] * x[point.dof[a]];
-    }
+    for (int a = 0; a < 4; ++a) sum += point.weight[a] * x[point.gather[a]];
     return sum;
   }
   /// The local gap to the contact plane at a point, for the displacement d (internal units).

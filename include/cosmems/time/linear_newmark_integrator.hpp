@@ -142,29 +142,29 @@ class LinearNewmarkIntegrator {
   // The step's constant coefficients. The vectors the next step multiplies by M and K are, with
   // vp = v + (1-af)(1-gamma) dt a and dp = d + (1-af)(dt v + dt^2 (1/2-beta) a),
   // x_m = am a + cM vp and x_k = cK vp + dp.
+  // Each product's coefficients are folded ahead (x_k = d + k_v v + k_a a): 4 operations an
+  // unknown instead of 8.
   struct Coefficients {
-    double dt, dd_a, dd_new, dv_a, dv_new, vp_a, am, cm, ck, dp_v, dp_a;
+    double dt, dd_a, dd_new, dv_a, dv_new, k_v, k_a, m_v, m_a;
 
-    double Xk(double d, double v, double a) const {
-      return ck * (v + vp_a * a) + d + dp_v * v + dp_a * a;
-    }
-    double Xm(double v, double a) const { return am * a + cm * (v + vp_a * a); }
+    double Xk(double d, double v, double a) const { return d + k_v * v + k_a * a; }
+    double Xm(double v, double a) const { return m_v * v + m_a * a; }
   };
 
   static Coefficients MakeCoefficients(const GeneralizedAlphaParameters& p, RayleighDamping c,
                                        double dt) {
     const double one_af = 1.0 - p.alpha_f;
+    const double vp_a = one_af * (1.0 - p.gamma) * dt;  // vp = v + vp_a a
+    const double dp_v = one_af * dt, dp_a = one_af * dt * dt * (0.5 - p.beta);
     return {dt,
             dt * dt * (0.5 - p.beta),
             dt * dt * p.beta,
             dt * (1.0 - p.gamma),
             dt * p.gamma,
-            one_af * (1.0 - p.gamma) * dt,
-            p.alpha_m,
+            c.stiffness + dp_v,
+            c.stiffness * vp_a + dp_a,
             c.mass,
-            c.stiffness,
-            one_af * dt,
-            one_af * dt * dt * (0.5 - p.beta)};
+            p.alpha_m + c.mass * vp_a};
   }
 
   const SymmetricBandMatrix& mass_;

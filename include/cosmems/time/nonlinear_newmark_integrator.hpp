@@ -13,6 +13,7 @@
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
+#include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/newton_driver.hpp"
 #include "cosmems/time/newton_options.hpp"
 #include "cosmems/time/newton_stats.hpp"
@@ -60,7 +61,8 @@ class NonlinearNewmarkIntegrator {
         dt_(time_step),
         newton_((ValidateNewtonOptions(options), options)),
         tangent_(mass.size(), mass.bandwidth()),
-        jacobian_(mass.size(), mass.bandwidth()) {
+        jacobian_(mass.size(), mass.bandwidth()),
+        linear_(mass, stiffness, damping, parameters, time_step) {
     RequirePositive("time_step", time_step);
     if (p_.IsExplicit()) {
       throw std::invalid_argument(
@@ -94,6 +96,8 @@ class NonlinearNewmarkIntegrator {
     }
     r_start_ = r_;
     force_.Commit(d_);
+    idle_ = force_.Idle(d_);
+    streak_ = false;
     return InitialAcceleration(mass_, stiffness_, damping_, d0, v0, f0 - r_, a_);
   }
 
@@ -101,6 +105,10 @@ class NonlinearNewmarkIntegrator {
   [[nodiscard]] Status Step(const Eigen::VectorXd& f_next) {
     f_target_ = &f_next;
     newton_.stats() = {};
+    if (idle_ && IdleStep(f_next)) {
+      f_target_ = nullptr;
+      return Status::kOk;
+    }
     time_save_ = time_;
     auto substep = [this](double a, double b, int) { return Substep(a, b); };
     auto save = [this] {
@@ -112,6 +120,7 @@ class NonlinearNewmarkIntegrator {
     const Status status = newton_.AdvanceInHalves(substep, save, [this] { force_.Revert(); });
     if (status == Status::kOk) {
       f_ = f_next;
+      idle_ = force_.Idle(d_);
     } else if (newton_.stats().cuts > 0) {  // a cut step may have got part of the way: back
       d_ = d_save_;
       v_ = v_save_;
@@ -123,15 +132,43 @@ class NonlinearNewmarkIntegrator {
     return status;
   }
 
-  const Eigen::VectorXd& displacement() const { return d_; }
-  const Eigen::VectorXd& velocity() const { return v_; }
-  const Eigen::VectorXd& acceleration() const { return a_; }
+  const Eigen::VectorXd& displacement() const { return streak_ ? linear_.displacement() : d_; }
+  const Eigen::VectorXd& velocity() const { return streak_ ? linear_.velocity() : v_; }
+  const Eigen::VectorXd& acceleration() const { return streak_ ? linear_.acceleration() : a_; }
   double time() const { return time_; }
   /// What the last step cost (all its sub-steps).
   const NewtonStats& last_stats() const { return newton_.stats(); }
 
  private:
   friend class NewtonDriver;
+
+  // A step whose force is idle at its start and at the linear structure's step's end is that
+  // step: the linear integrator's (its factor, one solve, no Newton), which holds the state while
+  // the force stays idle. The equations are then met exactly (the force and its tangent vanish
+  // around both ends), so Newton would end there too, to round-off. False, and this integrator
+  // back at the step's start, when the end is not idle.
+  bool IdleStep(const Eigen::VectorXd& f_next) {
+    if (linear_.info() != Status::kOk || force_.HasViscousPart()) return false;
+    if (!streak_) {
+      linear_.SetState(d_, v_, a_, f_);
+      streak_ = true;
+    }
+    d_save_ = linear_.displacement();
+    v_save_ = linear_.velocity();
+    a_save_ = linear_.acceleration();
+    if (linear_.Step(f_next) == Status::kOk && force_.Idle(linear_.displacement())) {
+      force_.Commit(linear_.displacement());
+      f_ = f_next;
+      time_ += dt_;
+      return true;
+    }
+    d_.swap(d_save_);  // back to the step's start, which Newton takes from here
+    v_.swap(v_save_);
+    a_.swap(a_save_);
+    r_start_.setZero();  // the force there: idle
+    streak_ = false;
+    return false;
+  }
 
   // One generalised-alpha step over [from, to] of the step, the load interpolated linearly.
   Status Substep(double from, double to) {
@@ -317,6 +354,9 @@ class NonlinearNewmarkIntegrator {
   ForceTangent tangent_;
   SymmetricBandMatrix jacobian_;
   BandRankOneCholesky factor_;
+  LinearNewmarkIntegrator linear_;  ///< the steps while the force is idle
+  bool idle_ = false;               ///< whether the force is idle at the accepted state
+  bool streak_ = false;             ///< whether linear_ holds the state (d_, v_, a_ do not)
   const Eigen::VectorXd* f_target_ = nullptr;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
       f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;
