@@ -74,11 +74,11 @@ class NonlinearForce {
     return true;
   }
 
-  /// Whether the force is idle at d: r and its tangent vanish in a neighbourhood of d, and
-  /// Settle() and ProjectMotion() would change nothing there (a contact whose every point is
-  /// clear of the substrate, unstuck and unpushed). A step whose start and end are both idle is
-  /// then the linear structure's, which the integrators solve without Newton. The default, never
-  /// idle, is always safe. Allocates nothing.
+  /// Whether the force is idle at d: r (its velocity-dependent part included) and its tangent
+  /// vanish in a neighbourhood of d, and Settle() and ProjectMotion() would change nothing there
+  /// (a contact whose every point is clear of the substrate, unstuck and unpushed). A step whose
+  /// start and end are both idle is then the linear structure's, which the integrators solve
+  /// without Newton. The default, never idle, is always safe. Allocates nothing.
   virtual bool Idle(const Eigen::VectorXd& /*d*/) const { return false; }
 
   // A force with an internal state (contact multipliers, stuck nodes) takes part in the solvers'

@@ -148,7 +148,6 @@ class NonlinearNewmarkIntegrator {
   // around both ends), so Newton would end there too, to round-off. False, and this integrator
   // back at the step's start, when the end is not idle.
   bool IdleStep(const Eigen::VectorXd& f_next) {
-    if (linear_.info() != Status::kOk || force_.HasViscousPart()) return false;
     if (!streak_) {
       linear_.SetState(d_, v_, a_, f_);
       streak_ = true;
