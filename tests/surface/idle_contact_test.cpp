@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cosmems/beam/load_vector.hpp"
+#include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
 #include "test_beams.hpp"
@@ -88,6 +90,65 @@ TEST(IdleContactTest, IdleStepsFollowNewtonsHistoryThroughImpacts) {
   EXPECT_EQ(idle_contact.events().proximity_warnings, newton_contact.events().proximity_warnings);
   EXPECT_LE(before_contact, 1e-12 * largest);
   EXPECT_LE(worst, 1e-3 * nudge) << idle_steps << " idle steps";
+}
+
+// Idle() and Commit() prove a far beam clear of the plane from one pass over d (the points'
+// largest reach) and visit the points only when that bound cannot: against every point's gap
+// computed here, on the cantilever's static shape scaled from rest through the plane and back.
+// Idle: every point clear by more than the tolerance. Commit: each node free, near (within the
+// proximity warning's distance) or touching, the beam the worst of its nodes, and the events at
+// the beam's transitions.
+TEST(IdleContactTest, IdleAndCommitAgreeWithEveryPointsGap) {
+  const BeamModel<2> model = test::PlanarCantilever(test::kReferenceLength, 20);
+  ContactOptions options;
+  options.gap = test::kReferenceGap;
+  SubstrateContact<2> contact(model, options);
+  const SubstrateContactModel<2>& shared = *contact.model();
+  LoadCase loads;
+  loads.points.push_back(
+      {test::kReferenceLength, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  const Eigen::VectorXd shape = BandCholesky(model.Stiffness()).Solve(AssembleLoads(model, loads));
+  const int tip = model.dofs().Reduced(model.NodeCount() - 1, NodalDof::kUy);
+  const double closing = shared.gap() / -shape[tip];  // the scale that brings the tip down to g = 0
+  auto gap = [&](std::size_t k, const Eigen::VectorXd& d) {
+    const auto& point = shared.points()[k];
+    double g = shared.gap();
+    for (int a = 0; a < 4; ++a) {
+      if (point.dof[a] >= 0) g += point.shape[a] * d[point.dof[a]];
+    }
+    return g;
+  };
+  const double separation = options.separation / model.units().length;
+  ContactState beam_before = ContactState::kFree;
+  int warnings = 0, contacts = 0, idle = 0, busy = 0;
+  for (int i = 0; i <= 400; ++i) {
+    const double scale = closing * 1.05 * (i <= 200 ? i : 400 - i) / 200.0;
+    const Eigen::VectorXd d = scale * shape;
+    bool clear = true;
+    for (std::size_t k = 0; k < shared.points().size(); ++k) {
+      clear = clear && gap(k, d) > shared.tolerance();
+    }
+    ASSERT_EQ(contact.Idle(d), clear) << "scale " << scale / closing;
+    (clear ? idle : busy) += 1;
+    contact.Commit(d);
+    ContactState beam = ContactState::kFree;
+    for (int k = 0; k < contact.NodeCount(); ++k) {
+      const double g = gap(static_cast<std::size_t>(k), d);
+      const ContactState expected = g <= shared.tolerance()               ? ContactState::kContact
+                                    : g + separation < shared.proximity() ? ContactState::kNear
+                                                                          : ContactState::kFree;
+      ASSERT_EQ(contact.NodeState(k), expected) << "node " << k << ", scale " << scale / closing;
+      beam = std::max(beam, expected);
+    }
+    if (beam_before < ContactState::kNear && beam >= ContactState::kNear) ++warnings;
+    if (beam_before < ContactState::kContact && beam >= ContactState::kContact) ++contacts;
+    beam_before = beam;
+  }
+  EXPECT_GT(idle, 100);  // both sides of the sweep are visited
+  EXPECT_GT(busy, 10);
+  EXPECT_EQ(contacts, 1);
+  EXPECT_EQ(contact.events().contacts, contacts);
+  EXPECT_EQ(contact.events().proximity_warnings, warnings);
 }
 
 }  // namespace

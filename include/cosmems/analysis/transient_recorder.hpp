@@ -21,8 +21,10 @@ namespace cosmems {
 /// Steps are timed in batches. A clock read costs tens of nanoseconds here, as much as a modal
 /// step: read around every step it took half of a four-mode run's time. The first kProbe steps
 /// are timed one by one; from their median and the clock's own cost, a batch is then the fewest
-/// steps that take at least kClockReads clock reads' time (so the two reads per batch cost at most
-/// a tenth), one step when a step costs more than that (every Newton step), at most kMaxBatch.
+/// steps that take at least kClockReads clock reads' time (the two reads per batch cost 2 % by
+/// that count; in the run, where a read costs more than back to back, 20 reads' batches still
+/// spent a tenth of a four-mode run in the clock), one step when a step costs more than that
+/// (every Newton step), at most kMaxBatch.
 /// A batch's figure is its time per step, its output read included: what a caller stepping the
 /// model sees per step, averaged over the batch (StepTiming::batch says over how many).
 class TransientRecorder {
@@ -87,7 +89,7 @@ class TransientRecorder {
 
  private:
   static constexpr long kProbe = 32;
-  static constexpr double kClockReads = 20.0;
+  static constexpr double kClockReads = 100.0;
   static constexpr long kMaxBatch = 4096;
 
   // The batch for the rest of the run, from the probe's steps; reserves the figures' room.

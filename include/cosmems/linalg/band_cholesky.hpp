@@ -2,8 +2,10 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/linalg/band_kernels.hpp"
@@ -53,6 +55,7 @@ class BandCholesky {
 
   Status info() const { return status_; }
   int size() const { return size_; }
+  int bandwidth() const { return bandwidth_; }
 
   /// Solves A x = b in place. Allocates nothing; call only when info() is kOk.
   void SolveInPlace(Eigen::Ref<Eigen::VectorXd> b) const {
@@ -72,6 +75,17 @@ class BandCholesky {
       for (int k = std::min(bandwidth_, size_ - 1 - j); k >= 1; --k) s -= unit_(k, j) * b[j + k];
       b[j] = s;
     }
+  }
+
+  /// Solves A x = b in place with b's entries made row by row, b_i = rhs(i), and each solved x_j
+  /// handed to solved(j, x_j) (internal::BandLdlSolveRows: work independent of the sweeps runs in
+  /// their waits), W the bandwidth() fixed at compile time. Allocates nothing; call only when
+  /// info() is kOk.
+  template <int W, typename Rhs, typename Solved>
+  void SolveRows(double* b, Rhs&& rhs, Solved&& solved) const {
+    assert(W == bandwidth_);
+    internal::BandLdlSolveRows<W>(unit_.data(), W + 1, inverse_pivot_.data(), size_, b,
+                                  std::forward<Rhs>(rhs), std::forward<Solved>(solved));
   }
 
   /// Solves A x = b and A y = c in place, together: the sweeps wait on the row before, and the

@@ -43,18 +43,21 @@ void SymmetricBandMultiplyAdd(const double* __restrict a, int stride, int n,
 }
 
 /// Solves L D L^T x = b in place, L unit lower with L(j+k, j) at unit[j stride + k] and 1 / D_j
-/// at inverse[j].
+/// at inverse[j], with two hooks for the work around a solve: b_i = rhs(i) is made just before
+/// the forward sweep needs it, and solved(j, x_j) is called as the backward sweep finds x_j.
 ///
 /// Row i needs row i - 1, so the sweeps cannot overlap rows, and they are bound by loads. The
 /// last W solved values therefore ride along in registers (a window the compiler unrolls; a
 /// value stored a row ago would also come back through store-to-load forwarding), the older
-/// terms are summed first, and one multiply-add per row lies on the critical path.
-template <int W>
-void BandLdlSolve(const double* __restrict unit, int stride, const double* __restrict inverse,
-                  int n, double* __restrict b) {
+/// terms are summed first, and one multiply-add per row lies on the critical path. Work that
+/// does not depend on the sweeps (a row product making b_i, an update taking x_j) runs in their
+/// waits, where as a pass of its own it would cost its own time.
+template <int W, typename Rhs, typename Solved>
+void BandLdlSolveRows(const double* __restrict unit, int stride, const double* __restrict inverse,
+                      int n, double* b, Rhs&& rhs, Solved&& solved) {
   double window[W + 1] = {};     // window[k - 1]: the value solved k rows ago
   for (int i = 0; i < n; ++i) {  // L y = b
-    double s = b[i];
+    double s = rhs(i);
     if (i >= W) {
       for (int k = W; k >= 1; --k) s -= unit[static_cast<long>(i - k) * stride + k] * window[k - 1];
     } else {
@@ -74,7 +77,17 @@ void BandLdlSolve(const double* __restrict unit, int stride, const double* __res
     }
     for (int k = W - 1; k >= 1; --k) window[k] = window[k - 1];
     b[j] = window[0] = s;
+    solved(j, s);
   }
+}
+
+/// BandLdlSolveRows with b as the right side and nothing more to do. (b is not restrict there:
+/// rhs reads it.)
+template <int W>
+void BandLdlSolve(const double* __restrict unit, int stride, const double* __restrict inverse,
+                  int n, double* __restrict b) {
+  BandLdlSolveRows<W>(
+      unit, stride, inverse, n, b, [b](int i) { return b[i]; }, [](int, double) {});
 }
 
 /// Factors a symmetric band matrix as A = L D L^T, L unit lower: L(j+k, j) goes to

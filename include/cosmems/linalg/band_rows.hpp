@@ -33,16 +33,19 @@ class BandRows {
   int padding() const { return bandwidth_; }
   int Width() const { return 2 * bandwidth_ + 1; }
 
-  /// y -= A x, `x_padded` holding x at offsets padding() ... padding() + size() - 1 and zeros
-  /// around it. Allocates nothing.
+  /// Row i of A x, `x_padded` holding x at offsets padding() ... padding() + size() - 1 and zeros
+  /// around it, for the bandwidth W fixed at compile time (W == padding()).
+  template <int W>
+  double RowProduct(int i, const double* x_padded) const {
+    using Row = Eigen::Matrix<double, 2 * W + 1, 1>;
+    return Eigen::Map<const Row>(rows_.data() + static_cast<long>(i) * (2 * W + 1))
+        .dot(Eigen::Map<const Row>(x_padded + i));
+  }
+
+  /// y -= A x, x padded as for RowProduct(). Allocates nothing.
   void SubtractProduct(const double* x_padded, double* y) const {
     const bool fixed = internal::DispatchBandwidth(bandwidth_, [&](auto w) {
-      constexpr int kWidth = 2 * decltype(w)::value + 1;
-      using Row = Eigen::Matrix<double, kWidth, 1>;
-      for (int i = 0; i < size_; ++i) {
-        y[i] -= Eigen::Map<const Row>(rows_.data() + static_cast<long>(i) * kWidth)
-                    .dot(Eigen::Map<const Row>(x_padded + i));
-      }
+      for (int i = 0; i < size_; ++i) y[i] -= RowProduct<decltype(w)::value>(i, x_padded);
     });
     if (fixed) return;
     const int width = Width();

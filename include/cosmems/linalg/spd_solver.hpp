@@ -52,6 +52,9 @@ class SpdSolver {
 
   Status info() const { return status_; }
   SpdSolverKind kind() const { return kind_; }
+  /// The band factor, for solves that make their right side row by row (BandCholesky::SolveRows);
+  /// null for the other kinds.
+  const BandCholesky* band() const { return kind_ == SpdSolverKind::kBand ? &band_ : nullptr; }
 
   void SolveInPlace(Eigen::Ref<Eigen::VectorXd> b) const {
     switch (kind_) {

@@ -91,7 +91,11 @@ class SubstrateContact final : public NonlinearForce {
         node_count_(model_->node_count()),
         gap_(model_->gap()),
         tolerance_(model_->tolerance()),
-        penalty_(model_->penalty()) {
+        penalty_(model_->penalty()),
+        reach_(model_->reach()),
+        // A node is free when g + separation >= proximity, and touches when g <= tolerance.
+        free_margin_(std::max(tolerance_, model_->proximity() - model_->options().separation /
+                                                                    model_->units().length)) {
     const std::size_t m = point_count_;
     lambda_.assign(m, 0.0);
     committed_lambda_.assign(m, 0.0);
@@ -140,7 +144,9 @@ class SubstrateContact final : public NonlinearForce {
   // Idle: no stuck node, and every point (placed or not) clear of the plane by more than the
   // tolerance and not pushed (its multiplier below k g). Evaluate() then adds nothing, Settle()
   // places and updates nothing, ProjectMotion() holds nothing; Commit() still counts the states.
+  // A contact holding nothing is idle wherever one pass over d proves every point clear.
   bool Idle(const Eigen::VectorXd& d) const override {
+    if (quiet_ && ClearBy(tolerance_, d)) return true;
     for (std::size_t k = 0; k < point_count_; ++k) {
       const double g = Gap(points_[k], d);
       if (!(g > tolerance_) || stuck_[k] || lambda_[k] > penalty_ * g) return false;
@@ -152,7 +158,10 @@ class SubstrateContact final : public NonlinearForce {
     bool settled = true;
     for (std::size_t k = 0; k < point_count_; ++k) {  // the multipliers' update
       const double g = Gap(points_[k], d);
-      if (-g > tolerance_) placed_[k] = 1;  // an element's point that went through starts to hold
+      if (-g > tolerance_) {  // an element's point that went through starts to hold
+        placed_[k] = 1;
+        quiet_ = false;
+      }
       if (!Holds(k)) continue;
       // Through the plane, or (unilateral) still pushing while clear of it by more than the
       // tolerance: a multiplier from a deeper iterate must not hold the beam up off the plane.
@@ -160,20 +169,29 @@ class SubstrateContact final : public NonlinearForce {
       const double violation = stuck_[k] ? std::abs(g) : -g;
       if (violation > tolerance_ || clear_but_pushing) {
         lambda_[k] = Reaction(k, g);
+        quiet_ = false;
         settled = false;
       }
     }
     if (!settled || !model_->options().stiction) return settled;
     for (std::size_t k = 0; k < node_count_; ++k) {  // pressed nodes stick: same equilibrium
-      if (Reaction(k, Gap(points_[k], d)) > 0.0) stuck_[k] = 1;
+      if (Reaction(k, Gap(points_[k], d)) > 0.0) {
+        stuck_[k] = 1;
+        quiet_ = false;
+      }
     }
     return !Peel(d);
   }
 
   void Commit(const Eigen::VectorXd& d) override {
+    // Free and holding nothing, and d provably clear of the plane and of the proximity warning
+    // at every point: the states, the events and the committed copies stay as they are.
+    if (quiet_ && state_ == ContactState::kFree && ClearBy(free_margin_, d)) return;
     ContactState beam = ContactState::kFree;
+    bool quiet = true;
     for (std::size_t k = node_count_; k < point_count_; ++k) {
       if (Holds(k) && Touching(k, Gap(points_[k], d))) {
+        quiet = false;
         beam = ContactState::kContact;
       } else {  // lifted clear or adhered: let go, not to sit on the plane's kink unneeded
         placed_[k] = 0;
@@ -182,6 +200,7 @@ class SubstrateContact final : public NonlinearForce {
     }
     for (std::size_t k = 0; k < node_count_; ++k) {
       const double g = Gap(points_[k], d);
+      quiet = quiet && !stuck_[k] && lambda_[k] == 0.0;
       ContactState& s = node_state_[k];
       if (stuck_[k]) {
         s = ContactState::kStuck;
@@ -203,12 +222,14 @@ class SubstrateContact final : public NonlinearForce {
     committed_lambda_ = lambda_;  // equal sizes: copies without allocating
     committed_stuck_ = stuck_;
     committed_placed_ = placed_;
+    quiet_ = committed_quiet_ = quiet;
   }
 
   void Revert() override {
     lambda_ = committed_lambda_;
     stuck_ = committed_stuck_;
     placed_ = committed_placed_;
+    quiet_ = committed_quiet_;
   }
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
@@ -263,6 +284,7 @@ class SubstrateContact final : public NonlinearForce {
     committed_lambda_ = lambda_;
     committed_stuck_ = stuck_;
     state_ = ContactState::kFree;
+    quiet_ = committed_quiet_ = true;
   }
 
   /// Every free node stuck to the substrate, as after the beam was pressed down all along (the
@@ -270,6 +292,7 @@ class SubstrateContact final : public NonlinearForce {
   void StickAll() {
     std::fill(stuck_.begin(), stuck_.begin() + static_cast<std::ptrdiff_t>(node_count_), 1);
     committed_stuck_ = stuck_;
+    quiet_ = committed_quiet_ = node_count_ == 0;
   }
 
   /// The beam pressed down all along (SubstrateContactModel::PressedDisplacement).
@@ -454,6 +477,12 @@ class SubstrateContact final : public NonlinearForce {
   using Point = typename SubstrateContactModel<Dim>::Point;
 
   double Gap(const Point& point, const Eigen::VectorXd& d) const { return gap_ + Along(point, d); }
+
+  // Whether every point is clear of the plane by more than `margin` at d, proven by one pass over
+  // d (SubstrateContactModel::reach()); false when unproven (or d is not finite).
+  bool ClearBy(double margin, const Eigen::VectorXd& d) const {
+    return reach_ * d.cwiseAbs().template maxCoeff<Eigen::PropagateNaN>() < gap_ - margin;
+  }
   std::size_t Checked(int k) const { return model_->Checked(k); }
   bool Adjacent(std::size_t a, std::size_t b) const { return model_->Adjacent(a, b); }
   static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
@@ -465,11 +494,15 @@ class SubstrateContact final : public NonlinearForce {
   // through the shared pointer (the release measured 6 % slower without).
   const Point* points_;
   std::size_t point_count_;
-  std::size_t node_count_;            ///< the nodes' points, first in points_
-  double gap_, tolerance_, penalty_;  ///< internal units
+  std::size_t node_count_;                    ///< the nodes' points, first in points_
+  double gap_, tolerance_, penalty_, reach_;  ///< internal units
+  double free_margin_;  ///< the clearance every point needs for the contact to be free
   std::vector<double> lambda_, committed_lambda_;
   std::vector<char> stuck_, committed_stuck_;
   std::vector<char> placed_, committed_placed_;  ///< whether each point holds (nodes: always)
+  /// True only while the multipliers are zero, no node is stuck and no element's point placed,
+  /// as at the last Commit() (which the committed copies then equal): the contact holds nothing.
+  bool quiet_ = true, committed_quiet_ = true;
   std::vector<ContactState> node_state_;
   ContactState state_ = ContactState::kFree;
   ContactEvents events_;

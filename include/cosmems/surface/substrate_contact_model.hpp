@@ -115,6 +115,8 @@ class SubstrateContactModel {
         point.gather[a] = std::max(point.dof[a], 0);
         point.weight[a] = point.dof[a] >= 0 ? point.shape[a] : 0.0;
       }
+      reach_ = std::max(reach_, std::abs(point.weight[0]) + std::abs(point.weight[1]) +
+                                    std::abs(point.weight[2]) + std::abs(point.weight[3]));
     }
     penalty_ = options.penalty * largest;
     length_ = model.NodeX().back();
@@ -138,6 +140,9 @@ class SubstrateContactModel {
   double proximity() const { return proximity_; }
   double penalty() const { return penalty_; }
   double length() const { return length_; }
+  /// No point's gap differs from gap() by more than reach() max_i |d_i| (the largest sum of a
+  /// point's |weights|): one pass over d bounds every gap, without visiting the points.
+  double reach() const { return reach_; }
 
   /// shape . x[dof] for a point, the supported entries left out (as weight 0).
   static double Along(const Point& point, const Eigen::Ref<const Eigen::VectorXd>& x) {
@@ -219,6 +224,7 @@ class SubstrateContactModel {
   UnitSystem units_;
   ContactOptions options_;
   double gap_ = 0.0, tolerance_ = 0.0, proximity_ = 0.0, penalty_ = 0.0, length_ = 0.0;
+  double reach_ = 0.0;
   std::vector<Point> points_;
   std::size_t node_count_ = 0;  ///< the nodes' points, first in points_
   BandCholesky mass_factor_;

@@ -5,6 +5,8 @@
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
+#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/band_kernels.hpp"
 #include "cosmems/linalg/band_rows.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
@@ -22,7 +24,8 @@ namespace cosmems {
 /// for a_(n+1), so S is factorised once at construction and a step is a row product with K
 /// (and with M, unless the member needs none; BandRows), one back-solve and one pass of
 /// updates.
-/// Step() allocates nothing and throws nothing.
+/// Step() allocates nothing and throws nothing; it writes the new state beside the old one, so
+/// Undo() returns to the step's start exactly (a caller that steps ahead to test the result).
 class LinearNewmarkIntegrator {
  public:
   /// `mass` and `stiffness` share one band pattern (as a BeamModel's do) and must outlive the
@@ -40,11 +43,9 @@ class LinearNewmarkIntegrator {
         pad_(stiffness.bandwidth()) {
     RequirePositive("time_step", time_step);
     const int n = mass.size();
-    d_.setZero(n);
-    v_.setZero(n);
-    a_.setZero(n);
-    a_new_.setZero(n);
-    f_.setZero(n);
+    for (Eigen::VectorXd* x : {&d_, &v_, &a_, &d_new_, &v_new_, &a_new_, &f_, &f_old_}) {
+      x->setZero(n);
+    }
     // x_m, x_k carry the zero padding of the row products (BandRows).
     x_m_.setZero(n + 2 * pad_);
     x_k_.setZero(n + 2 * pad_);
@@ -80,52 +81,59 @@ class LinearNewmarkIntegrator {
     v_ = v;
     a_ = a;
     f_ = f;
-    const Coefficients& c = coefficients_;
-    for (Eigen::Index i = 0; i < d_.size(); ++i) {
-      x_k_[pad_ + i] = c.Xk(d_[i], v_[i], a_[i]);
-      x_m_[pad_ + i] = c.Xm(v_[i], a_[i]);
-    }
+    PrepareProducts();
   }
 
   /// Advances by one time step to the load f_next at t + dt. A non-finite result is reported
   /// as Status::kNonFinite and the step is not taken.
   [[nodiscard]] Status Step(const Eigen::VectorXd& f_next) {
     if (status_ != Status::kOk) return status_;
-    const double af = p_.alpha_f;
     // a_(n+1) = S^-1 (f_(n+1-af) - M x_m - K x_k); x_m, x_k were prepared by the last update.
-    if (af == 0.0) {
-      a_new_ = f_next;
-    } else {
-      a_new_ = (1.0 - af) * f_next + af * f_;
+    // The band factor takes the products and the updates into its sweeps; the others solve,
+    // then update in a pass of their own.
+    bool finite = true;
+    const BandCholesky* band = solver_.band();
+    const bool fused =
+        band != nullptr && internal::DispatchBandwidth(band->bandwidth(), [&](auto w) {
+          finite = SolveAndUpdate<decltype(w)::value>(f_next, *band);
+        });
+    if (!fused) {
+      const double af = p_.alpha_f;
+      if (af == 0.0) {
+        a_new_ = f_next;
+      } else {
+        a_new_ = (1.0 - af) * f_next + af * f_;
+      }
+      if (uses_mass_) mass_rows_.SubtractProduct(x_m_.data(), a_new_.data());
+      stiffness_rows_.SubtractProduct(x_k_.data(), a_new_.data());
+      solver_.SolveInPlace(a_new_);
+      finite = a_new_.allFinite();
+      if (finite) {
+        Update(coefficients_, d_.size(), d_.data(), v_.data(), a_.data(), a_new_.data(),
+               d_new_.data(), v_new_.data(), x_k_.data() + pad_,
+               uses_mass_ ? x_m_.data() + pad_ : nullptr);
+      }
     }
-    if (uses_mass_) mass_rows_.SubtractProduct(x_m_.data(), a_new_.data());
-    stiffness_rows_.SubtractProduct(x_k_.data(), a_new_.data());
-    solver_.SolveInPlace(a_new_);
-    if (!a_new_.allFinite()) return Status::kNonFinite;
-    // One pass: Newmark's updates and the next step's x_k. Coefficients live in locals and the
-    // vectors behind restrict pointers: otherwise every store could alias a member, forcing
-    // reloads and ruling out vectorisation. The pass is memory-bound, so it touches only what
-    // this member needs: f_n only when af != 0, x_m only when M enters.
-    const Coefficients c = coefficients_;
-    double* __restrict d = d_.data();
-    double* __restrict v = v_.data();
-    const double* __restrict a = a_.data();
-    double* __restrict xk = x_k_.data() + pad_;
-    const double* __restrict an = a_new_.data();
-    const Eigen::Index n = d_.size();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      d[i] += c.dt * v[i] + c.dd_a * a[i] + c.dd_new * an[i];
-      v[i] += c.dv_a * a[i] + c.dv_new * an[i];
-      xk[i] = c.Xk(d[i], v[i], an[i]);
+    if (!finite) {  // the state is untouched; the products' vectors may not be
+      PrepareProducts();
+      return Status::kNonFinite;
     }
-    if (uses_mass_) {
-      double* __restrict xm = x_m_.data() + pad_;
-      for (Eigen::Index i = 0; i < n; ++i) xm[i] = c.Xm(v[i], an[i]);
+    if (p_.alpha_f != 0.0) {
+      f_old_.swap(f_);
+      f_ = f_next;
     }
-    if (p_.alpha_f != 0.0) f_ = f_next;
-    a_.swap(a_new_);
+    Swap();  // the old state stays beside the new one, for Undo()
     time_ += dt_;
     return Status::kOk;
+  }
+
+  /// Back to the start of the last step taken: the state bit for bit. Once only: the step
+  /// before it is gone.
+  void Undo() {
+    Swap();
+    if (p_.alpha_f != 0.0) f_.swap(f_old_);
+    time_ -= dt_;
+    PrepareProducts();
   }
 
   const Eigen::VectorXd& displacement() const { return d_; }
@@ -147,9 +155,85 @@ class LinearNewmarkIntegrator {
   struct Coefficients {
     double dt, dd_a, dd_new, dv_a, dv_new, k_v, k_a, m_v, m_a;
 
+    // Newmark's updates of d and v by the old and new accelerations (the increment summed first).
+    double D(double d, double v, double a, double an) const {
+      return d + (dt * v + dd_a * a + dd_new * an);
+    }
+    double V(double v, double a, double an) const { return v + (dv_a * a + dv_new * an); }
     double Xk(double d, double v, double a) const { return d + k_v * v + k_a * a; }
     double Xm(double v, double a) const { return m_v * v + m_a * a; }
   };
+
+  // The step on the band factor (BandCholesky::SolveRows): each row's products, f_i - M_i x_m -
+  // K_i x_k, made as the forward sweep reaches it, and Newmark's updates of unknown j (with the
+  // next step's x_k and x_m) done as the backward sweep solves a_(n+1),j. The sweeps wait on one
+  // multiply-add per row and this work fills the waits: one pass over the unknowns, not four.
+  // Returns whether every a_(n+1),j is finite; the state (d_, v_, a_) is written beside, not
+  // over.
+  template <int W>
+  bool SolveAndUpdate(const Eigen::VectorXd& f_next, const BandCholesky& band) {
+    const double af = p_.alpha_f, one_af = 1.0 - af;
+    const double* f_n1 = f_next.data();
+    const double* f_n = f_.data();
+    const double* x_m = x_m_.data();  // padded, as the rows take them
+    const double* x_k = x_k_.data();
+    const bool mass = uses_mass_;
+    auto rhs = [&](int i) {
+      double b = af == 0.0 ? f_n1[i] : one_af * f_n1[i] + af * f_n[i];
+      if (mass) b -= mass_rows_.RowProduct<W>(i, x_m);
+      return b - stiffness_rows_.RowProduct<W>(i, x_k);
+    };
+    const Coefficients c = coefficients_;
+    const double* d = d_.data();
+    const double* v = v_.data();
+    const double* a = a_.data();
+    double* dn = d_new_.data();
+    double* vn = v_new_.data();
+    double* xk = x_k_.data() + pad_;  // the forward sweep is done with the old values
+    double* xm = x_m_.data() + pad_;
+    bool finite = true;
+    auto solved = [&](int j, double an) {
+      finite &= std::isfinite(an);
+      dn[j] = c.D(d[j], v[j], a[j], an);
+      vn[j] = c.V(v[j], a[j], an);
+      xk[j] = c.Xk(dn[j], vn[j], an);
+      if (mass) xm[j] = c.Xm(vn[j], an);
+    };
+    band.SolveRows<W>(a_new_.data(), rhs, solved);
+    return finite;
+  }
+
+  // The pass is memory-bound, so it touches only what this member needs (x_m only when M
+  // enters). The vectors come in as restrict parameters, which the compiler honours (on local
+  // pointers it may not): otherwise each store could alias the next load, and the loop, with
+  // seven vectors, would stay scalar.
+  static void Update(const Coefficients c, Eigen::Index n, const double* __restrict d,
+                     const double* __restrict v, const double* __restrict a,
+                     const double* __restrict an, double* __restrict dn, double* __restrict vn,
+                     double* __restrict xk, double* __restrict xm) {
+    for (Eigen::Index i = 0; i < n; ++i) {
+      dn[i] = c.D(d[i], v[i], a[i], an[i]);
+      vn[i] = c.V(v[i], a[i], an[i]);
+      xk[i] = c.Xk(dn[i], vn[i], an[i]);
+    }
+    if (xm == nullptr) return;
+    for (Eigen::Index i = 0; i < n; ++i) xm[i] = c.Xm(vn[i], an[i]);
+  }
+
+  void Swap() {  // buffers, not values: allocates nothing
+    d_.swap(d_new_);
+    v_.swap(v_new_);
+    a_.swap(a_new_);
+  }
+
+  // x_k and x_m from the state (d, v, a), as the last step's update would have left them.
+  void PrepareProducts() {
+    const Coefficients& c = coefficients_;
+    for (Eigen::Index i = 0; i < d_.size(); ++i) {
+      x_k_[pad_ + i] = c.Xk(d_[i], v_[i], a_[i]);
+      x_m_[pad_ + i] = c.Xm(v_[i], a_[i]);
+    }
+  }
 
   static Coefficients MakeCoefficients(const GeneralizedAlphaParameters& p, RayleighDamping c,
                                        double dt) {
@@ -180,7 +264,7 @@ class LinearNewmarkIntegrator {
   BandRows mass_rows_;
   int pad_;
   bool uses_mass_ = true;  ///< x_m = am a + cM vp is not identically zero
-  Eigen::VectorXd d_, v_, a_, a_new_, f_, x_m_, x_k_;
+  Eigen::VectorXd d_, v_, a_, d_new_, v_new_, a_new_, f_, f_old_, x_m_, x_k_;
   NewtonStats no_newton_;
 };
 

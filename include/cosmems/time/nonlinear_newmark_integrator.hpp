@@ -152,18 +152,18 @@ class NonlinearNewmarkIntegrator {
       linear_.SetState(d_, v_, a_, f_);
       streak_ = true;
     }
-    d_save_ = linear_.displacement();
-    v_save_ = linear_.velocity();
-    a_save_ = linear_.acceleration();
-    if (linear_.Step(f_next) == Status::kOk && force_.Idle(linear_.displacement())) {
-      force_.Commit(linear_.displacement());
-      f_ = f_next;
-      time_ += dt_;
-      return true;
+    if (linear_.Step(f_next) == Status::kOk) {
+      if (force_.Idle(linear_.displacement())) {
+        force_.Commit(linear_.displacement());
+        f_ = f_next;
+        time_ += dt_;
+        return true;
+      }
+      linear_.Undo();
     }
-    d_.swap(d_save_);  // back to the step's start, which Newton takes from here
-    v_.swap(v_save_);
-    a_.swap(a_save_);
+    d_ = linear_.displacement();  // the step's start, which Newton takes from here
+    v_ = linear_.velocity();
+    a_ = linear_.acceleration();
     r_start_.setZero();  // the force there: idle
     streak_ = false;
     return false;
