@@ -6,12 +6,12 @@
 // dense LLT (`dense_ns`, `x_dense`): the yardsticks of a step at the speed of
 // its arithmetic.
 #include <algorithm>
-#include <chrono>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "flop_rate.hpp"
 #include "reference_beam.hpp"
 #include "step_extremes.hpp"
+#include "step_time.hpp"
 
 namespace cosmems {
 namespace {
@@ -30,17 +30,13 @@ LinearNewmarkIntegrator MakeStep(const BeamModel<Dim>& model, SpdSolverKind solv
   return integrator;
 }
 
-// ns per step of `integrator` over `steps` steps.
-double TimeSteps(LinearNewmarkIntegrator& integrator, const Eigen::VectorXd& f, long steps) {
-  const auto start = std::chrono::steady_clock::now();
-  for (long i = 0; i < steps; ++i) {
+// One step of `integrator` to the load f, kept from being optimised away.
+auto Stepping(LinearNewmarkIntegrator& integrator, const Eigen::VectorXd& f) {
+  return [&integrator, &f] {
     const Status status = integrator.Step(f);
     benchmark::DoNotOptimize(status);
     benchmark::DoNotOptimize(integrator.displacement().data());
-  }
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
-             .count() /
-         static_cast<double>(steps);
+  };
 }
 
 // The band step's floating-point operations per unknown, as the code runs them:
@@ -62,16 +58,8 @@ void BM_LinearNewmarkStep(benchmark::State& state) {
     state.SkipWithError("initialisation failed");
     return;
   }
-  auto step = [&] {
-    const Status status = integrator.Step(f);
-    benchmark::DoNotOptimize(status);
-    benchmark::DoNotOptimize(integrator.displacement().data());
-  };
-  const auto start = std::chrono::steady_clock::now();
-  for (auto _ : state) step();
-  const double step_ns =
-      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-      static_cast<double>(state.iterations());
+  auto step = Stepping(integrator, f);
+  const double step_ns = bench::TimedLoop(state, step);
   bench::RecordStepExtremes(state, step);
   state.counters["dofs"] = n;
   if (kSolver != SpdSolverKind::kBand) return;
@@ -79,7 +67,7 @@ void BM_LinearNewmarkStep(benchmark::State& state) {
   if (state.range(0) > 100) return;
   LinearNewmarkIntegrator dense = MakeStep(model, SpdSolverKind::kDense, f);
   const long steps = std::max<long>(1000, static_cast<long>(state.iterations()) / 4);
-  const double dense_ns = TimeSteps(dense, f, steps);
+  const double dense_ns = bench::TimeSteps(steps, Stepping(dense, f));
   state.counters["dense_ns"] = dense_ns;
   state.counters["x_dense"] = step_ns / dense_ns;
 }

@@ -1,14 +1,13 @@
 // Per-step cost of exact modal propagation (one load pattern, uy at the tip read every step)
 // against the number of modes, and its multiple of the time its arithmetic takes on this machine:
 // (14 + 2m) k flops for k modes and m patterns, and 2 (k + m) to read uy (bench/flop_rate.hpp).
-#include <chrono>
-
 #include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/beam/output_point.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "flop_rate.hpp"
 #include "reference_beam.hpp"
 #include "step_extremes.hpp"
+#include "step_time.hpp"
 
 namespace cosmems {
 namespace {
@@ -34,11 +33,7 @@ void BM_ModalStep(benchmark::State& state) {
     benchmark::DoNotOptimize(status);
     benchmark::DoNotOptimize(propagator.DisplacementAt(tip));
   };
-  const auto start = std::chrono::steady_clock::now();
-  for (auto _ : state) step();
-  const double step_ns =
-      std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
-      static_cast<double>(state.iterations());
+  const double step_ns = bench::TimedLoop(state, step);
   bench::RecordStepExtremes(state, step);
   const double k = static_cast<double>(modal.shapes.cols());
   bench::RecordArithmetic(state, (14.0 + 2.0) * k + 2.0 * (k + 1.0), step_ns);
