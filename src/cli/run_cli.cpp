@@ -12,6 +12,8 @@
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "frame_modal_report.hpp"
+#include "frame_static_report.hpp"
 #include "haptic_report.hpp"
 #include "modal_report.hpp"
 #include "pullin_report.hpp"
@@ -43,6 +45,11 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
+  // A frame runs the static and modal analyses (the scene reader refuses the others).
+  if (scene.structure.kind == StructureKind::kFrame) {
+    if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
+    return internal::FrameStaticReport::Run(scene);
+  }
   switch (scene.analysis.type) {
     case AnalysisType::kStatic:
       return internal::StaticReport::Run(scene);
@@ -120,8 +127,10 @@ int ShowScene(const std::string& name, std::ostream& out) {
 }  // namespace
 
 int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app("cosmems: fast simulation of MEMS beams (cantilevers and clamped-clamped bridges)",
-               "cosmems");
+  CLI::App app(
+      "cosmems: fast simulation of MEMS beams (cantilevers, clamped-clamped bridges) and "
+      "frames of beams and rigid bodies",
+      "cosmems");
   app.set_version_flag("--version", std::string("cosmems ") + COSMEMS_VERSION);
   app.require_subcommand(1);
 

@@ -12,16 +12,12 @@
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
 #include "csv_file.hpp"
+#include "json_vector.hpp"
 #include "nodal_shape.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
 namespace {
-
-// + 0.0 turns -0 (a rotation the sign convention negates from zero, say) into 0.
-std::vector<double> ToJson(const Eigen::Vector3d& v) {
-  return {v.x() + 0.0, v.y() + 0.0, v.z() + 0.0};
-}
 
 // The statics of the scene's forces: the loads and the surface pressures ramped together from
 // the unloaded beam. A ramp that stops short of its full value met a fold: no equilibrium is left

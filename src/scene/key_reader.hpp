@@ -6,8 +6,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "cosmems/structure/structure_description.hpp"
 #include "scene_keys.hpp"
 #include "toml_field_reader.hpp"
 #include "toml_format.hpp"
@@ -89,6 +91,105 @@ class KeyReader {
       r_.RequireWithin(key + "[" + std::to_string(i) + "]", (*values)[i], bounds);
     }
     field = Eigen::Vector3d((*values)[0], (*values)[1], (*values)[2]);
+  }
+  void RequiredVector(const char* name, Eigen::Vector3d& field, const Bounds& bounds,
+                      const char* meaning) {
+    if (!Reads(name)) return;
+    if (r_.Find(Key(name)) == nullptr) r_.FailMissing(Key(name));
+    Vector(name, field, bounds, meaning);
+  }
+  void Integer(const char* name, std::optional<int>& field, const IntegerRange& range, const char*,
+               const char* meaning) {
+    if (!Reads(name) || r_.Find(Key(name)) == nullptr) return;
+    int value = 0;
+    Integer(name, value, range, meaning);
+    field = value;
+  }
+  void RequiredText(const char* name, std::string& field, const char* meaning) {
+    if (!Reads(name)) return;
+    if (r_.Find(Key(name)) == nullptr) r_.FailMissing(Key(name));
+    Text(name, field, meaning);
+  }
+  void OptionalText(const char* name, std::optional<std::string>& field, const char*,
+                    const char* meaning) {
+    if (!Reads(name) || r_.Find(Key(name)) == nullptr) return;
+    std::string value;
+    Text(name, value, meaning);
+    field = value;
+  }
+  /// A required array of non-empty strings: exactly `count`, or one or more when count is 0.
+  void Names(const char* name, std::vector<std::string>& field, std::size_t count, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const toml::node* node = r_.Find(key);
+    if (node == nullptr) r_.FailMissing(key);
+    const std::string expected = count > 0
+                                     ? "expected an array of " + std::to_string(count) + " names"
+                                     : "expected an array of one or more names";
+    const toml::array* array = node->as_array();
+    r_.Require(array != nullptr && (count > 0 ? array->size() == count : !array->empty()), key,
+               expected);
+    field.clear();
+    for (const toml::node& element : *array) {
+      r_.Require(element.is_string() && !element.value<std::string>()->empty(), key, expected);
+      field.push_back(*element.value<std::string>());
+    }
+  }
+  /// A support's name ("clamped", ...) or a list of the fixed dofs (["uy", "rz"]).
+  void Anchor(const char* name, AnchorMask& field, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const toml::node* node = r_.Find(key);
+    if (node == nullptr) return;
+    static constexpr std::array<std::pair<const char*, Support>, 4> kSupports = {
+        {{"free", Support::kFree},
+         {"clamped", Support::kClamped},
+         {"pinned", Support::kPinned},
+         {"guided", Support::kGuided}}};
+    static constexpr std::array<const char*, 6> kDofs = {"ux", "uy", "uz", "rx", "ry", "rz"};
+    const std::string expected =
+        "expected \"free\", \"clamped\", \"pinned\", \"guided\" or a list of dofs among "
+        "\"ux\", \"uy\", \"uz\", \"rx\", \"ry\", \"rz\"";
+    if (const std::optional<std::string> support = node->value<std::string>()) {
+      for (const auto& [spelling, kind] : kSupports) {
+        if (*support == spelling) {
+          field = AnchorOf(kind);
+          return;
+        }
+      }
+      r_.Fail(key, expected);
+    }
+    const toml::array* array = node->as_array();
+    r_.Require(array != nullptr, key, expected);
+    field = AnchorMask{};
+    for (const toml::node& element : *array) {
+      const std::optional<std::string> dof = element.value<std::string>();
+      const auto at =
+          dof ? std::find_if(kDofs.begin(), kDofs.end(), [&](const char* d) { return *dof == d; })
+              : kDofs.end();
+      r_.Require(at != kDofs.end(), key, expected);
+      field[at - kDofs.begin()] = true;
+    }
+  }
+  /// An array of tables ([[TABLE.NAME]]), each entry read by `visit` and refused unknown keys.
+  template <class Entry, class Visit>
+  void Entries(const char* name, std::vector<Entry>& entries, Visit visit, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    const toml::node* node = r_.Find(key);
+    if (node == nullptr) return;
+    const toml::array* array = node->as_array();
+    r_.Require(array != nullptr && array->is_array_of_tables(), key,
+               "expected an array of tables ([[" + key + "]])");
+    entries.clear();
+    for (std::size_t i = 0; i < array->size(); ++i) {
+      const std::string table = key + "[" + std::to_string(i) + "]";
+      KeyReader reader(r_, table, length_);
+      Entry entry;
+      visit(reader, entry);
+      r_.RejectUnknownKeys(table, reader.names());
+      entries.push_back(std::move(entry));
+    }
   }
   void Pair(const char* name, std::optional<std::array<double, 2>>& field, const Bounds& first,
             const Bounds& second, const char*) {

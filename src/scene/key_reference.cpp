@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "scene_keys.hpp"
@@ -54,8 +55,11 @@ class KeyReference {
   void Text(const char* name, std::string& field, const char* meaning) {
     Row(name, "a non-empty string", "`\"" + field + "\"`", meaning);
   }
-  void Vector(const char* name, Eigen::Vector3d&, const Bounds& bounds, const char* meaning) {
-    Row(name, "`[x, y, z]`, each " + Range(bounds), "`[0, 0, 0]`", meaning);
+  void Vector(const char* name, Eigen::Vector3d& field, const Bounds& bounds, const char* meaning) {
+    Row(name, "`[x, y, z]`, each " + Range(bounds),
+        "`[" + FormatNumber(field.x()) + ", " + FormatNumber(field.y()) + ", " +
+            FormatNumber(field.z()) + "]`",
+        meaning);
   }
   void Pair(const char* name, std::optional<std::array<double, 2>>&, const Bounds& first,
             const Bounds& second, const char* meaning) {
@@ -63,6 +67,38 @@ class KeyReference {
   }
   void Position(const char* name, std::optional<double>&, const char* meaning) {
     Row(name, "0 … `structure.length` m", "see meaning", meaning);
+  }
+  void RequiredVector(const char* name, Eigen::Vector3d&, const Bounds& bounds,
+                      const char* meaning) {
+    Row(name, "`[x, y, z]`, each " + Range(bounds), "required", meaning);
+  }
+  void Integer(const char* name, std::optional<int>&, const IntegerRange& range,
+               const char* fallback, const char* meaning) {
+    Row(name, "integer, " + std::to_string(range.lower) + " … " + std::to_string(range.upper),
+        fallback, meaning);
+  }
+  void RequiredText(const char* name, std::string&, const char* meaning) {
+    Row(name, "a non-empty string", "required", meaning);
+  }
+  void OptionalText(const char* name, std::optional<std::string>&, const char* fallback,
+                    const char* meaning) {
+    Row(name, "a non-empty string", fallback, meaning);
+  }
+  void Names(const char* name, std::vector<std::string>&, std::size_t count, const char* meaning) {
+    Row(name, count > 0 ? "`[" + std::to_string(count) + " names]`" : "`[names]`", "required",
+        meaning);
+  }
+  void Anchor(const char* name, AnchorMask&, const char* meaning) {
+    Row(name, "a support or `[dofs]`", "`\"free\"`", meaning);
+  }
+  // The entry's keys follow as TABLE.NAME[].KEY, in the entry's scope.
+  template <class Entry, class Visit>
+  void Entries(const char* name, std::vector<Entry>&, Visit visit, const char* meaning) {
+    Row(name, "an array of tables", "none", meaning);
+    KeyReference entry(out_, table_ + "." + name + "[]");
+    entry.scope_ = scope_;
+    Entry defaults;
+    visit(entry, defaults);
   }
 
  private:
@@ -132,8 +168,10 @@ std::string SceneKeyReference() {
   std::string out = "| key | accepts | default | meaning |\n|---|---|---|---|\n";
   Table(out, "structure", [&](auto& v) { VisitStructure(v, s.structure); });
   Table(out, "material", [&](auto& v) { VisitMaterial(v, s.material); });
+  // Named materials of a frame take the keys of [material].
+  Table(out, "materials.NAME", [&](auto& v) { VisitMaterial(v, s.material); });
   Table(out, "model", [&](auto& v) { VisitModel(v, s.model); });
-  Table(out, "loads", [&](auto& v) { VisitLoads(v, s.loads, f, f.kind); });
+  Table(out, "loads", [&](auto& v) { VisitLoads(v, s.loads, f, f.kind, s.structure.kind); });
   Table(out, "effects.contact", [&](auto& v) { VisitContact(v, contact); });
   Table(out, "effects.stiction", [&](auto& v) { VisitStiction(v, stiction); });
   Table(out, "effects.electrostatic", [&](auto& v) { VisitElectrostatic(v, electrostatic); });

@@ -54,7 +54,8 @@ struct IntegerRange {
 /// or time function shows an intent the run would not follow).
 enum class Unchosen { kSkipped, kRefused };
 
-inline constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge};
+inline constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge,
+                                               StructureKind::kFrame};
 inline constexpr std::array kTheories = {Theory::kLinear, Theory::kStretching, Theory::kCosserat};
 inline constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::kModal,
                                               AnalysisType::kBuckling,  AnalysisType::kPullin,
@@ -72,15 +73,59 @@ inline constexpr std::array kTimeFunctions = {TimeFunctionKind::kStep, TimeFunct
                                               TimeFunctionKind::kSine};
 
 template <class V>
+void VisitNode(V& v, SceneNode& n) {
+  v.RequiredText("name", n.name, "unique; beams, bodies and loads refer to it");
+  v.RequiredVector("position", n.position, kCoordinate, "on the members' centroid axes");
+  v.Anchor("support", n.anchor,
+           "\"free\" (default), \"clamped\", \"pinned\", \"guided\", or a list of the fixed dofs "
+           "(\"ux\", \"uy\", \"uz\", \"rx\", \"ry\", \"rz\")");
+}
+
+template <class V>
+void VisitBeam(V& v, SceneBeam& b) {
+  v.Names("nodes", b.nodes, 2, "from, to: two named nodes");
+  v.Required("width", b.width, Positive(kLength), "in the plane, across the member's axis");
+  v.Number("thickness", b.thickness, Positive(kLength), "structure.thickness",
+           "along its thickness direction");
+  v.Integer("elements", b.elements, IntegerRange{1, kMaxElements}, "model.elements",
+            "equal elements along the member");
+  v.OptionalText("material", b.material, "[material]", "a [materials.NAME] table");
+  v.Vector("thickness_direction", b.thickness_direction, kDirection,
+           "only for a member not parallel to the substrate");
+}
+
+template <class V>
+void VisitBody(V& v, SceneBody& b) {
+  v.RequiredText("name", b.name, "unique among bodies; loads and results refer to it");
+  v.RequiredVector("center", b.center, kCoordinate, "the block's centre");
+  v.RequiredVector("size", b.size, kLength, "extents along x, y (thickness) and z, each > 0");
+  v.Names("nodes", b.nodes, 0, "the nodes attached rigidly to the body (one or more)");
+  v.OptionalText("material", b.material, "[material]",
+                 "a [materials.NAME] table; its density gives mass and rotary inertia");
+}
+
+template <class V>
 void VisitStructure(V& v, SceneStructure& s) {
   v.RequiredChoice("kind", s.kind, kStructureKinds, "structure kind",
-                   "a cantilever (clamped at x = 0, free at the tip) or a bridge (both ends "
-                   "clamped)");
+                   "a cantilever (clamped at x = 0, free at the tip), a bridge (both ends "
+                   "clamped), or a frame: a netlist of nodes, beams and rigid bodies");
+  v.Required("thickness", s.thickness, Positive(kLength),
+             "along y, normal to the substrate (a frame's default for its members)");
+  v.Number("gap", s.gap, Positive(kLength), "no substrate", "from the lower face to the substrate");
+  v.Scope("a cantilever or a bridge", s.kind != StructureKind::kFrame, Unchosen::kRefused);
   v.Required("length", s.length, Positive(kLength), "along x");
   v.Required("width", s.width, Positive(kLength), "along z, in the substrate's plane");
-  v.Required("thickness", s.thickness, Positive(kLength), "along y, normal to the substrate");
-  v.Number("gap", s.gap, Positive(kLength), "no substrate", "from the lower face to the substrate");
   v.Number("axial_load", s.axial_load, AnySign(kForce), "residual axial force, tension > 0");
+  v.Scope("structure.kind = \"frame\"", s.kind == StructureKind::kFrame, Unchosen::kRefused);
+  v.Entries(
+      "nodes", s.nodes, [](auto& e, SceneNode& n) { VisitNode(e, n); },
+      "[[structure.nodes]]: the frame's named points");
+  v.Entries(
+      "beams", s.beams, [](auto& e, SceneBeam& b) { VisitBeam(e, b); },
+      "[[structure.beams]]: members between two nodes, each meshed into model.elements");
+  v.Entries(
+      "bodies", s.bodies, [](auto& e, SceneBody& b) { VisitBody(e, b); },
+      "[[structure.bodies]]: rigid blocks (plates, shuttles, proof masses, mirrors)");
 }
 
 template <class V>
@@ -106,11 +151,18 @@ void VisitModel(V& v, SceneModel& m) {
 }
 
 template <class V>
-void VisitLoads(V& v, SceneLoads& l, SceneTimeFunction& f, TimeFunctionKind chosen) {
-  v.Vector("tip_force", l.tip_force, kForce, "at the free end (cantilever only)");
-  v.Vector("midspan_force", l.midspan_force, kForce, "at x = length / 2");
-  v.Vector("distributed", l.distributed, kForcePerLength, "over the whole length");
-  v.Vector("tip_moment", l.tip_moment, kMoment, "at the free end (cantilever only)");
+void VisitPointLoad(V& v, ScenePointLoad& p) {
+  v.OptionalText("node", p.node, "none", "the node the load acts at; or:");
+  v.OptionalText("body", p.body, "none", "the body at whose centre it acts");
+  v.Vector("force", p.force, kForce, "N");
+  v.Vector("moment", p.moment, kMoment, "N m, about the node or the body's centre");
+}
+
+template <class V>
+void VisitLoads(V& v, SceneLoads& l, SceneTimeFunction& f, TimeFunctionKind chosen,
+                StructureKind kind) {
+  v.Vector("distributed", l.distributed, kForcePerLength,
+           "over the whole length (a frame: over every member)");
   v.Choice("time_function", f.kind, kTimeFunctions, "time function",
            "the amplitude of every load in a transient: held from t = 0, rising linearly over "
            "ramp_time, or sin(2 pi frequency t)");
@@ -118,6 +170,14 @@ void VisitLoads(V& v, SceneLoads& l, SceneTimeFunction& f, TimeFunctionKind chos
   v.Required("ramp_time", f.ramp_time, Positive(kTime), "the ramp's rise time");
   v.Scope("the \"sine\" time function", chosen == TimeFunctionKind::kSine, Unchosen::kRefused);
   v.Required("frequency", f.frequency, Positive(kFrequency), "the sine's frequency");
+  v.Scope("a cantilever or a bridge", kind != StructureKind::kFrame, Unchosen::kRefused);
+  v.Vector("tip_force", l.tip_force, kForce, "at the free end (cantilever only)");
+  v.Vector("midspan_force", l.midspan_force, kForce, "at x = length / 2");
+  v.Vector("tip_moment", l.tip_moment, kMoment, "at the free end (cantilever only)");
+  v.Scope("structure.kind = \"frame\"", kind == StructureKind::kFrame, Unchosen::kRefused);
+  v.Entries(
+      "points", l.points, [](auto& e, ScenePointLoad& p) { VisitPointLoad(e, p); },
+      "[[loads.points]]: a force and a moment at a node or a body's centre");
 }
 
 template <class V>

@@ -17,6 +17,9 @@ namespace cosmems::internal {
 constexpr Bounds kLength{1e-12, 1.0, "m"};
 // Lengths that may be 0: the contact's separation, the gas's mean free path.
 constexpr Bounds kLengthOrZero{0.0, kLength.upper, "m"};
+// A frame's coordinates, about its origin, and a direction's components (any length).
+constexpr Bounds kCoordinate{-kLength.upper, kLength.upper, "m"};
+constexpr Bounds kDirection{-1.0, 1.0, ""};
 // From below the softest gels (~100 Pa) to above diamond (1.2e12 Pa).
 constexpr Bounds kYoungModulus{1.0, 1e13, "Pa"};
 // From below the lightest aerogels (~0.2 kg/m^3) to above osmium (22,590 kg/m^3).

@@ -1,13 +1,16 @@
 #include "scene_reader.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "cosmems/scene/frame_conversion.hpp"
 #include "key_reader.hpp"
 #include "scene_keys.hpp"
 #include "scene_limits.hpp"
@@ -33,11 +36,27 @@ SceneStructure ReadStructure(const TomlFieldReader& r) {
   return s;
 }
 
-SceneMaterial ReadMaterial(const TomlFieldReader& r) {
-  r.RequireTable("material");
+// [material]: required of a beam; a frame whose entries all name a material may leave it out
+// (CheckFrame).
+SceneMaterial ReadMaterial(const TomlFieldReader& r, StructureKind kind) {
+  if (kind != StructureKind::kFrame) r.RequireTable("material");
   SceneMaterial m;
-  ReadTable(r, "material", [&](auto& v) { VisitMaterial(v, m); });
+  if (r.HasTable("material")) ReadTable(r, "material", [&](auto& v) { VisitMaterial(v, m); });
   return m;
+}
+
+// [materials.NAME]: a frame's named materials, each with the keys of [material].
+std::map<std::string, SceneMaterial> ReadMaterials(const TomlFieldReader& r, StructureKind kind) {
+  std::map<std::string, SceneMaterial> materials;
+  if (!r.HasTable("materials")) return materials;
+  r.Require(kind == StructureKind::kFrame, "materials",
+            "named materials are for structure.kind = \"frame\" (a beam takes [material])");
+  for (const std::string& name : r.Keys("materials")) {
+    const std::string table = "materials." + name;
+    r.RequireTable(table);
+    ReadTable(r, table, [&](auto& v) { VisitMaterial(v, materials[name]); });
+  }
+  return materials;
 }
 
 SceneModel ReadModel(const TomlFieldReader& r) {
@@ -46,7 +65,7 @@ SceneModel ReadModel(const TomlFieldReader& r) {
   return m;
 }
 
-SceneLoads ReadLoads(const TomlFieldReader& r) {
+SceneLoads ReadLoads(const TomlFieldReader& r, StructureKind structure) {
   SceneLoads l;
   if (!r.HasTable("loads")) return l;
   // The time function first: its choice decides which of its parameters the loads may carry.
@@ -62,8 +81,9 @@ SceneLoads ReadLoads(const TomlFieldReader& r) {
               "needs loads.frequency (Hz, > 0)");
   }
   SceneTimeFunction f;
-  ReadTable(r, "loads",
-            [&](auto& v) { VisitLoads(v, l, f, kind.value_or(TimeFunctionKind::kStep)); });
+  ReadTable(r, "loads", [&](auto& v) {
+    VisitLoads(v, l, f, kind.value_or(TimeFunctionKind::kStep), structure);
+  });
   if (kind) l.time_function = f;
   return l;
 }
@@ -318,20 +338,91 @@ void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
+// A frame names nodes, bodies and materials that must exist, and runs the linear static and
+// modal analyses, without surface effects (those act on a cantilever or a bridge).
+void CheckFrame(const TomlFieldReader& r, const Scene& scene) {
+  if (scene.structure.kind != StructureKind::kFrame) return;
+  const SceneStructure& s = scene.structure;
+  const std::string kind = "structure.kind = \"frame\"";
+  r.Require(!s.nodes.empty(), "structure.nodes", kind + " needs [[structure.nodes]]");
+  r.Require(!s.beams.empty(), "structure.beams", kind + " needs [[structure.beams]]");
+  r.Require(
+      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
+      "analysis.type", kind + " runs the \"static\" and \"modal\" analyses");
+  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
+            kind + " takes the \"linear\" theory (the Cosserat rod is a single-member theory)");
+  r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
+  r.Require(!scene.effects.HasSurfaceEffect(), "effects",
+            "surface effects act on a cantilever or a bridge, not on " + kind);
+  auto node_named = [&](const std::string& name) {
+    return std::any_of(s.nodes.begin(), s.nodes.end(),
+                       [&](const SceneNode& n) { return n.name == name; });
+  };
+  auto body_named = [&](const std::string& name) {
+    return std::any_of(s.bodies.begin(), s.bodies.end(),
+                       [&](const SceneBody& b) { return b.name == name; });
+  };
+  auto check_material = [&](const std::string& entry, const std::optional<std::string>& name) {
+    if (name) {
+      r.Require(scene.materials.count(*name) > 0, entry + ".material",
+                "no [materials." + *name + "] table");
+    } else {
+      r.Require(r.HasTable("material"), entry + ".material",
+                "none named and no [material] table to default to");
+    }
+  };
+  for (std::size_t i = 0; i < s.beams.size(); ++i) {
+    const std::string entry = "structure.beams[" + std::to_string(i) + "]";
+    for (const std::string& name : s.beams[i].nodes) {
+      r.Require(node_named(name), entry + ".nodes", "no node \"" + name + "\"");
+    }
+    check_material(entry, s.beams[i].material);
+  }
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const std::string entry = "structure.bodies[" + std::to_string(i) + "]";
+    for (const std::string& name : s.bodies[i].nodes) {
+      r.Require(node_named(name), entry + ".nodes", "no node \"" + name + "\"");
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      r.Require(s.bodies[j].name != s.bodies[i].name, entry + ".name",
+                "already the name of structure.bodies[" + std::to_string(j) + "]");
+    }
+    check_material(entry, s.bodies[i].material);
+  }
+  // The netlist's geometry (a member of zero length, a node on two bodies, ...), named at its
+  // key in the scene.
+  try {
+    MakeStructureDescription(scene);
+  } catch (const FieldError& error) {
+    r.Fail(error.field(), error.reason());
+  }
+  for (std::size_t i = 0; i < scene.loads.points.size(); ++i) {
+    const ScenePointLoad& p = scene.loads.points[i];
+    const std::string entry = "loads.points[" + std::to_string(i) + "]";
+    r.Require(p.node.has_value() != p.body.has_value(), entry,
+              "give the node or the body the load acts at (one of them)");
+    if (p.node) r.Require(node_named(*p.node), entry + ".node", "no node \"" + *p.node + "\"");
+    if (p.body) r.Require(body_named(*p.body), entry + ".body", "no body \"" + *p.body + "\"");
+  }
+}
+
 }  // namespace
 
 Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   const TomlFieldReader r(root, origins);
   r.RejectUnknownKeys(
-      "", {"structure", "material", "model", "loads", "effects", "analysis", "device"}, "table");
+      "", {"structure", "material", "materials", "model", "loads", "effects", "analysis", "device"},
+      "table");
   Scene scene;
   scene.structure = ReadStructure(r);
-  scene.material = ReadMaterial(r);
+  scene.material = ReadMaterial(r, scene.structure.kind);
+  scene.materials = ReadMaterials(r, scene.structure.kind);
   scene.model = ReadModel(r);
-  scene.loads = ReadLoads(r);
+  scene.loads = ReadLoads(r, scene.structure.kind);
   scene.effects = ReadEffects(r, scene.structure);
   scene.analysis = ReadAnalysis(r);
   scene.device = ReadDevice(r);
+  CheckFrame(r, scene);
   CheckLoads(r, scene);
   CheckTransient(r, scene);
   CheckStretching(r, scene);

@@ -74,6 +74,12 @@ void TomlFieldReader::RejectUnknownKeys(const std::string& table,
   }
 }
 
+std::vector<std::string> TomlFieldReader::Keys(const std::string& table) const {
+  std::vector<std::string> keys;
+  for (const auto& [key, value] : *Find(table)->as_table()) keys.emplace_back(key.str());
+  return keys;
+}
+
 bool TomlFieldReader::HasTable(const std::string& key) const {
   const toml::node* node = Find(key);
   if (node == nullptr) return false;

@@ -47,6 +47,9 @@ class TomlFieldReader {
   void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
                          std::string_view noun = "key") const;
 
+  /// The keys of the table at `table`, in the file's order.
+  std::vector<std::string> Keys(const std::string& table) const;
+
   /// Whether `key` holds a table; throws when it holds anything else.
   bool HasTable(const std::string& key) const;
   /// Throws "missing required table" unless `key` holds a table.

@@ -2,6 +2,7 @@
 
 #include <cosmems/beam/beam_model.hpp>
 #include <cosmems/rod/cosserat_rod.hpp>
+#include <cosmems/scene/frame_conversion.hpp>
 #include <cosmems/scene/scene_conversion.hpp>
 #include <cosmems/scene/scene_error.hpp>
 #include <cosmems/scene/scene_loader.hpp>
@@ -25,9 +26,24 @@ void BuildModel(const BeamDescription& description) {
   }
 }
 
+// A frame's netlist, its model and loads.
+void ConvertFrame(const Scene& scene) {
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure);
+  if (!model.Stiffness().data().allFinite() || !model.Mass(0).data().allFinite()) {
+    std::fprintf(stderr, "a valid frame scene built a model with non-finite matrices\n");
+    std::abort();
+  }
+  AssembleFrameLoads(model, MakeFrameLoadCase(scene, structure));
+}
+
 // Every conversion the CLI makes, and the model it builds: a scene the loader accepts must
 // convert and build without an error (the loader promises validated scenes).
 void Convert(const Scene& scene) {
+  if (scene.structure.kind == StructureKind::kFrame) {
+    ConvertFrame(scene);
+    return;
+  }
   const BeamDescription description = MakeBeamDescription(scene);
   if (scene.model.theory == Theory::kCosserat) {
     const CosseratRod rod(description);

@@ -6,8 +6,8 @@
 # Usage: check_layers.sh ROOT   (ROOT holds include/cosmems and src)
 set -euo pipefail
 root=${1:?usage: check_layers.sh ROOT}
-declare -A rank=([core]=0 [linalg]=1 [beam]=2 [rod]=3 [surface]=4 [time]=5 [analysis]=6
-  [scene]=7 [haptics]=8 [scripted]=9 [openhaptics]=9 [session]=10)
+declare -A rank=([core]=0 [linalg]=1 [beam]=2 [structure]=3 [rod]=4 [surface]=5 [time]=6
+  [analysis]=7 [scene]=8 [haptics]=9 [scripted]=10 [openhaptics]=10 [session]=11)
 status=0
 for dir in "${!rank[@]}"; do
   for tree in "$root/include/cosmems/$dir" "$root/src/$dir"; do

@@ -78,9 +78,10 @@ TEST(SceneOverrideTest, LaterOverridesWin) {
 TEST(SceneOverrideTest, BlamesTheCommandLineForTheValuesItWrote) {
   EXPECT_EQ(Message({"model.elements=ten"}),
             "--set: model.elements = \"ten\": expected an integer");
-  EXPECT_EQ(Message({"structure.lenght=1e-4"})
-                .rfind("--set: structure.lenght = 1e-04: unknown key (expected kind, length,", 0),
-            0u);
+  EXPECT_EQ(
+      Message({"structure.lenght=1e-4"})
+          .rfind("--set: structure.lenght = 1e-04: unknown key (expected kind, thickness,", 0),
+      0u);
   EXPECT_EQ(
       Message({"effects.stiction.adhesion_energy=0.0"})
           .rfind("--set: effects.stiction.adhesion_energy = 0.0: needs the work of adhesion", 0),

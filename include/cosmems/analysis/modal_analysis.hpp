@@ -284,11 +284,13 @@ inline Status SubspaceIteration(const ModalPencil& pencil, const BandRankOneChol
 /// solve per vector) to sum_j l_i^j M_2j x_i, the fixed point of x = l K^-1 sum_j l^j M_2j x, then
 /// projects onto the swept basis and solves the small projected problem (internal::SolveProjected).
 /// Mode i converges as l_i / l_(q+1) per sweep with q = max(2p, p + 8) vectors.
-template <int Dim>
-ModalResult SolveModal(const BeamModel<Dim>& model, const ModalPencil& pencil,
-                       const ModalOptions& options = {}) {
+///
+/// This is the pencil's part, whatever structure it came from: `time_unit` (s) turns its
+/// eigenvalues into frequencies, and each mode's kind is left for the structure to classify.
+inline ModalResult SolvePencilModes(const ModalPencil& pencil, double time_unit,
+                                    const ModalOptions& options = {}) {
   ModalResult result;
-  const int n = model.FreeDofCount();
+  const int n = pencil.stiffness.size();
   const int p = std::min(options.count, n);
   const int q = std::min(n, std::max(2 * p, p + 8));
   if (p <= 0) return result;
@@ -319,12 +321,20 @@ ModalResult SolveModal(const BeamModel<Dim>& model, const ModalPencil& pencil,
     Eigen::Index largest = 0;
     shape.cwiseAbs().maxCoeff(&largest);
     if (shape[largest] < 0.0) shape = -shape;
-    mode.frequency_hz = std::sqrt(lambda[i]) / (2.0 * kPi * model.units().time);
-    mode.kind = ClassifyMode(model, shape);
+    mode.frequency_hz = std::sqrt(lambda[i]) / (2.0 * kPi * time_unit);
     mode.shape = std::move(shape);
     if (!std::isfinite(mode.frequency_hz)) result.status = Status::kNonFinite;
     result.modes.push_back(std::move(mode));
   }
+  return result;
+}
+
+/// The modes of a beam about the state the pencil describes, each classified by its field.
+template <int Dim>
+ModalResult SolveModal(const BeamModel<Dim>& model, const ModalPencil& pencil,
+                       const ModalOptions& options = {}) {
+  ModalResult result = SolvePencilModes(pencil, model.units().time, options);
+  for (Mode& mode : result.modes) mode.kind = ClassifyMode(model, mode.shape);
   return result;
 }
 

@@ -70,12 +70,17 @@ inline BeamDescription UniformBeam(double length, const Material& material,
   return beam;
 }
 
-/// The structures a scene names: "cantilever" (clamped at x = 0) and "bridge" (clamped-clamped).
-enum class StructureKind { kCantilever, kBridge };
+/// The structures a scene names: "cantilever" (clamped at x = 0), "bridge" (clamped-clamped),
+/// and "frame", a netlist of members and bodies (StructureDescription), which is no one beam.
+enum class StructureKind { kCantilever, kBridge, kFrame };
 
+/// The cantilever or the bridge as a chain of equal elements; a frame is refused.
 inline BeamDescription MakeStructure(StructureKind kind, double length, const Material& material,
                                      const RectangularSection& section, int elements,
                                      int series_order) {
+  if (kind == StructureKind::kFrame) {
+    throw std::invalid_argument("structure.kind = \"frame\": a netlist, not one beam");
+  }
   BeamDescription beam = UniformBeam(length, material, section, elements, series_order);
   beam.supports.front() = Support::kClamped;
   if (kind == StructureKind::kBridge) beam.supports.back() = Support::kClamped;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 
 #include "cosmems/beam/beam_model.hpp"
-#include "cosmems/beam/element_interpolation.hpp"
+#include "cosmems/beam/element_loads.hpp"
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/core/validation.hpp"
 
@@ -31,25 +31,8 @@ Eigen::VectorXd AssembleLoads(const BeamModel<Dim>& model, const LoadCase& loads
                                   ": out of plane for a planar (dimension = 2) model");
     }
   };
-  // Generalised forces of a force F and moment C acting at local coordinate xi of element e.
-  auto apply = [&](int e, double xi, const Eigen::Vector3d& force, const Eigen::Vector3d& moment) {
-    const double l = model.elements()[e].properties().length;
-    const ShapeValues s = ShapeValues::At(model.bases(), xi);
-    for (int node = 0; node < 2; ++node) {
-      add(e, node, NodalDof::kUx, force.x() * s.bar[node]);
-      add(e, node, NodalDof::kUy,
-          force.y() * s.bending[2 * node] + moment.z() * s.bending_slope[2 * node] / l);
-      add(e, node, NodalDof::kRz,
-          force.y() * l * s.bending[2 * node + 1] + moment.z() * s.bending_slope[2 * node + 1]);
-      if constexpr (Dim == 3) {
-        add(e, node, NodalDof::kRx, moment.x() * s.bar[node]);
-        // x-z plane: w = uz, theta = dw/dx = -r_y, and a moment about y does work -C_y dw/dx.
-        add(e, node, NodalDof::kUz,
-            force.z() * s.bending[2 * node] - moment.y() * s.bending_slope[2 * node] / l);
-        add(e, node, NodalDof::kRy,
-            -force.z() * l * s.bending[2 * node + 1] + moment.y() * s.bending_slope[2 * node + 1]);
-      }
-    }
+  auto scatter = [&](int e, const ElementLoads& local) {
+    for (int a = 0; a < 12; ++a) add(e, a / 6, static_cast<NodalDof>(a % 6), local[a]);
   };
 
   for (const PointLoad& load : loads.points) {
@@ -66,20 +49,16 @@ Eigen::VectorXd AssembleLoads(const BeamModel<Dim>& model, const LoadCase& loads
     check_plane("load moment x", load.moment.x());
     check_plane("load moment y", load.moment.y());
     const auto [e, xi] = model.Locate(load.x / units.length);
-    apply(e, xi, load.force / units.force, load.moment / units.Moment());
+    scatter(e, PointElementLoads(model.bases(), model.elements()[e].properties().length, xi,
+                                 load.force / units.force, load.moment / units.Moment()));
   }
 
   const Eigen::Vector3d q = loads.distributed / units.ForcePerLength();
   for (int k = 0; k < 3; ++k) RequireFinite("distributed load", loads.distributed[k]);
   check_plane("distributed load z", loads.distributed.z());
   if (!q.isZero(0.0)) {
-    // A uniform load integrates the shape functions exactly with 3-point Gauss-Legendre
-    // (cubics are integrated exactly by any rule of degree >= 3).
-    const double nodes[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
-    const double weights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
     for (int e = 0; e < model.ElementCount(); ++e) {
-      const double l = model.elements()[e].properties().length;
-      for (int g = 0; g < 3; ++g) apply(e, nodes[g], q * (l * weights[g]), Eigen::Vector3d::Zero());
+      scatter(e, UniformElementLoads(model.bases(), model.elements()[e].properties().length, q));
     }
   }
   return f;

@@ -23,6 +23,20 @@ inline std::string FormatValue(double value) {
   return text;
 }
 
+/// Invalid input found at a field a caller can point to (a scene names its value): what() is
+/// "FIELD: REASON".
+class FieldError : public std::invalid_argument {
+ public:
+  FieldError(const std::string& field, const std::string& reason)
+      : std::invalid_argument(field + ": " + reason), field_(field), reason_(reason) {}
+  const std::string& field() const { return field_; }
+  const std::string& reason() const { return reason_; }
+
+ private:
+  std::string field_;
+  std::string reason_;
+};
+
 /// Throws std::invalid_argument("FIELD = VALUE: must be positive") unless 0 < value < inf.
 inline void RequirePositive(const std::string& field, double value) {
   if (!(value > 0.0) || !std::isfinite(value)) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cosmems/core/constants.hpp"
+#include "cosmems/core/skew.hpp"
 
 namespace cosmems {
 
@@ -12,19 +13,6 @@ namespace cosmems {
 // R = R(q); rotations compose by quaternion products, so no angle ever wraps and no Euler-angle
 // singularity exists. q and -q are the same rotation (the double cover): every function here
 // gives the same answer for both.
-
-/// [v]x, the matrix of the cross product: Skew(a) b = a x b.
-inline Eigen::Matrix3d Skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s(0, 0) = s(1, 1) = s(2, 2) = 0.0;
-  s(0, 1) = -v.z();
-  s(1, 0) = v.z();
-  s(0, 2) = v.y();
-  s(2, 0) = -v.y();
-  s(1, 2) = -v.x();
-  s(2, 1) = v.x();
-  return s;
-}
 
 /// The exponential map: the unit quaternion (cos(|theta|/2), sin(|theta|/2) theta/|theta|) of the
 /// rotation by the angle |theta| [rad] about theta (right-handed), for any |theta|.

@@ -1,11 +1,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/scene/scene_effects.hpp"
+#include "cosmems/structure/structure_description.hpp"
 
 namespace cosmems {
 
@@ -44,13 +47,15 @@ enum class TimeFunctionKind {
   kSine,  ///< "sine": times sin(2 pi frequency t)
 };
 
-/// The scene-file spelling: "cantilever" | "bridge".
+/// The scene-file spelling: "cantilever" | "bridge" | "frame".
 constexpr const char* ToString(StructureKind kind) {
   switch (kind) {
     case StructureKind::kCantilever:
       return "cantilever";
     case StructureKind::kBridge:
       return "bridge";
+    case StructureKind::kFrame:
+      return "frame";
   }
   return "unknown";
 }
@@ -143,15 +148,44 @@ constexpr const char* ToString(TimeFunctionKind kind) {
   return "unknown";
 }
 
-/// [structure]: the beam's shape and supports, in metres. x runs along the beam from the first
-/// support, y away from the substrate, z across the width.
+/// [[structure.nodes]]: a named point of a frame, where members meet and anchors hold.
+struct SceneNode {
+  std::string name;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< m, on the members' axes
+  AnchorMask anchor{};  ///< support: a named support or a list of fixed dofs; none: free
+};
+
+/// [[structure.beams]]: a member of a frame between two named nodes.
+struct SceneBeam {
+  std::vector<std::string> nodes;       ///< from, to
+  double width = 0.0;                   ///< m, in the plane, across the member's axis
+  std::optional<double> thickness;      ///< m; empty: structure.thickness
+  std::optional<int> elements;          ///< empty: model.elements
+  std::optional<std::string> material;  ///< a [materials.NAME]; empty: [material]
+  Eigen::Vector3d thickness_direction = Eigen::Vector3d::UnitY();
+};
+
+/// [[structure.bodies]]: a rigid block of a frame, holding the named nodes.
+struct SceneBody {
+  std::string name;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< m
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();    ///< m along x, y (thickness), z
+  std::vector<std::string> nodes;
+  std::optional<std::string> material;  ///< a [materials.NAME]; empty: [material]
+};
+
+/// [structure]: the beam's shape and supports, in metres (x runs along the beam from the first
+/// support, y away from the substrate, z across the width), or a frame's netlist.
 struct SceneStructure {
   StructureKind kind = StructureKind::kCantilever;
-  double length = 0.0;        ///< m
-  double width = 0.0;         ///< m, along z
-  double thickness = 0.0;     ///< m, along y
+  double length = 0.0;        ///< m (beams)
+  double width = 0.0;         ///< m, along z (beams)
+  double thickness = 0.0;     ///< m, along y; a frame's default for its members
   std::optional<double> gap;  ///< m between the lower face and the substrate; empty: no substrate
-  double axial_load = 0.0;    ///< N, residual axial force, tension > 0
+  double axial_load = 0.0;    ///< N, residual axial force, tension > 0 (beams)
+  std::vector<SceneNode> nodes;   ///< frames
+  std::vector<SceneBeam> beams;   ///< frames
+  std::vector<SceneBody> bodies;  ///< frames
 };
 
 /// [material]: an isotropic linear-elastic material.
@@ -179,12 +213,21 @@ struct SceneTimeFunction {
   double frequency = 0.0;  ///< Hz, > 0: s(t) = sin(2 pi frequency t) (kSine only)
 };
 
+/// [[loads.points]]: a force and a moment at a frame's node or at a body's centre.
+struct ScenePointLoad {
+  std::optional<std::string> node;
+  std::optional<std::string> body;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< N
+  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< N m
+};
+
 /// [loads]: loads in SI, components along x, y, z.
 struct SceneLoads {
   Eigen::Vector3d tip_force = Eigen::Vector3d::Zero();      ///< N at the free end (cantilever)
   Eigen::Vector3d midspan_force = Eigen::Vector3d::Zero();  ///< N at x = length / 2
   Eigen::Vector3d distributed = Eigen::Vector3d::Zero();    ///< N/m over the whole length
   Eigen::Vector3d tip_moment = Eigen::Vector3d::Zero();     ///< N m at the free end (cantilever)
+  std::vector<ScenePointLoad> points;                       ///< a frame's loads at nodes, bodies
   /// Empty when the scene does not give loads.time_function: a step.
   std::optional<SceneTimeFunction> time_function;
 };
@@ -230,7 +273,8 @@ struct SceneDevice {
 struct Scene {
   std::string source;  ///< the file path as given, or the embedded scene's name
   SceneStructure structure;
-  SceneMaterial material;
+  SceneMaterial material;  ///< a frame may leave it out when every entry names its material
+  std::map<std::string, SceneMaterial> materials;  ///< [materials.NAME] (frames)
   SceneModel model;
   SceneLoads loads;
   SceneEffects effects;

@@ -1,0 +1,130 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "cosmems/analysis/modal_analysis.hpp"
+#include "cosmems/structure/frame_model.hpp"
+
+namespace cosmems {
+
+/// The structure's six rigid motions about its mass centre (translations along x, y, z, then
+/// rotations about axes through the centre) and its mass and rotary inertia in each: what a
+/// mode's participation is measured against.
+struct FrameRigidMotions {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  ///< mass centre (internal units)
+  Eigen::Matrix<double, 6, 1> total = Eigen::Matrix<double, 6, 1>::Zero();  ///< r^T M_0 r, all
+                                                                            ///< dofs free
+  Eigen::MatrixXd reduced;  ///< n x 6: each motion on the free degrees of freedom
+
+  explicit FrameRigidMotions(const FrameModel& model) {
+    const FrameMesh& mesh = model.mesh();
+    const double length = model.units().length;
+    double mass = 0.0;
+    for (int e = 0; e < model.ElementCount(); ++e) {
+      const ElementProperties& p = model.elements()[e].properties();
+      const FrameMesh::Element& element = mesh.elements[e];
+      const Eigen::Vector3d middle =
+          0.5 * (mesh.nodes[element.from].position + mesh.nodes[element.to].position) / length;
+      mass += p.density * p.area * p.length;
+      center += p.density * p.area * p.length * middle;
+    }
+    for (std::size_t b = 0; b < mesh.body_carrier.size(); ++b) {
+      const double m = model.BodyMass(static_cast<int>(b))(0, 0);
+      mass += m;
+      center += m * mesh.carriers[mesh.body_carrier[b]].position / length;
+    }
+    center /= mass;
+
+    // Every element and body in full, anchors ignored: the totals are the whole structure's.
+    for (int e = 0; e < model.ElementCount(); ++e) {
+      const FrameMesh::Element& element = mesh.elements[e];
+      const FrameModel::Element::Matrix m0 = model.elements()[e].Mass(model.bases(), 0);
+      for (int k = 0; k < 6; ++k) {
+        FrameModel::ElementVector r;
+        r << element.axes * At(mesh.nodes[element.from].position / length, k).head<3>(),
+            element.axes * At(mesh.nodes[element.from].position / length, k).tail<3>(),
+            element.axes * At(mesh.nodes[element.to].position / length, k).head<3>(),
+            element.axes * At(mesh.nodes[element.to].position / length, k).tail<3>();
+        total[k] += r.dot(m0 * r);
+      }
+    }
+    reduced = Eigen::MatrixXd::Zero(model.FreeDofCount(), 6);
+    for (int c = 0; c < static_cast<int>(mesh.carriers.size()); ++c) {
+      const Eigen::Vector3d p = mesh.carriers[c].position / length;
+      for (int k = 0; k < 6; ++k) {
+        const FrameModel::Motion r = At(p, k);
+        for (int d = 0; d < 6; ++d) {
+          if (model.CarrierDof(c, d) >= 0) reduced(model.CarrierDof(c, d), k) = r[d];
+        }
+        if (mesh.carriers[c].body >= 0)
+          total[k] += r.dot(model.BodyMass(mesh.carriers[c].body) * r);
+      }
+    }
+  }
+
+  /// Rigid motion k (u, theta) at point p (internal units).
+  FrameModel::Motion At(const Eigen::Vector3d& p, int k) const {
+    FrameModel::Motion r = FrameModel::Motion::Zero();
+    if (k < 3) {
+      r[k] = 1.0;
+    } else {
+      const Eigen::Vector3d axis = Eigen::Vector3d::Unit(k - 3);
+      r.head<3>() = axis.cross(p - center);
+      r.tail<3>() = axis;
+    }
+    return r;
+  }
+};
+
+/// A frame's modes: each with its effective mass in the six rigid motions (ux, uy, uz, rx, ry,
+/// rz about the mass centre) as a fraction of the whole structure's: (x^T M_0 r)^2 / r^T M_0 r
+/// with x^T M_0 x = 1. Over all modes of a structure with nothing anchored they sum to one.
+struct FrameModalResult {
+  ModalResult modal;
+  std::vector<std::array<double, 6>> participation;  ///< one per mode
+};
+
+/// Classifies a frame's mode by the field of its members (local axial, bending along the
+/// thickness, bending across the width, torsion) that stores most of its strain energy: the
+/// members' fields stay uncoupled in their own axes, and a body's motion is a mode of its
+/// suspension.
+inline ModeKind ClassifyFrameMode(const FrameModel& model, const Eigen::VectorXd& shape) {
+  std::array<double, kFieldCount> energy{};
+  for (int e = 0; e < model.ElementCount(); ++e) {
+    const FrameModel::ElementVector u = model.LocalDisplacement(shape, e);
+    const FrameModel::ElementVector ku = model.LocalStiffness(e) * u;
+    for (int a = 0; a < 12; ++a) {
+      energy[static_cast<int>(FieldOf(static_cast<NodalDof>(a % 6)))] += u[a] * ku[a];
+    }
+  }
+  return static_cast<ModeKind>(std::max_element(energy.begin(), energy.end()) - energy.begin());
+}
+
+/// The lowest modes of a frame (the power-series polynomial eigenproblem across its members,
+/// SolvePencilModes), their kinds and participations.
+inline FrameModalResult SolveFrameModal(const FrameModel& model, const ModalOptions& options = {}) {
+  ModalPencil pencil{model.Stiffness(), 0.0, Eigen::VectorXd::Zero(model.FreeDofCount()), {}};
+  for (int j = 0; j <= model.SeriesOrder(); ++j) pencil.mass.push_back(model.Mass(j));
+  FrameModalResult out{SolvePencilModes(pencil, model.units().time, options), {}};
+  const FrameRigidMotions rigid(model);
+  Eigen::MatrixXd mr(model.FreeDofCount(), 6);
+  for (int k = 0; k < 6; ++k) {
+    Eigen::VectorXd column(model.FreeDofCount());
+    model.Mass(0).Multiply(rigid.reduced.col(k), column);
+    mr.col(k) = column;
+  }
+  for (Mode& mode : out.modal.modes) {
+    mode.kind = ClassifyFrameMode(model, mode.shape);
+    std::array<double, 6> share{};
+    for (int k = 0; k < 6; ++k) {
+      const double gamma = mode.shape.dot(mr.col(k));
+      share[k] = rigid.total[k] > 0.0 ? gamma * gamma / rigid.total[k] : 0.0;
+    }
+    out.participation.push_back(share);
+  }
+  return out;
+}
+
+}  // namespace cosmems

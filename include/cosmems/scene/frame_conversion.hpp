@@ -1,0 +1,19 @@
+#pragma once
+
+#include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/scene/scene.hpp"
+#include "cosmems/structure/structure_description.hpp"
+
+namespace cosmems {
+
+// From a validated frame scene (structure.kind = "frame") to the core's netlist, in SI.
+
+/// The scene's nodes, beams and bodies with their names resolved to indices: each beam's
+/// thickness, element count and material default to structure.thickness, model.elements and
+/// [material]; a body's density is its material's. Validated (StructureDescription::Validate).
+StructureDescription MakeStructureDescription(const Scene& scene);
+
+/// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.
+FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure);
+
+}  // namespace cosmems

@@ -1,0 +1,252 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "cosmems/beam/frame_element.hpp"
+#include "cosmems/core/units.hpp"
+#include "cosmems/linalg/symmetric_band_matrix.hpp"
+#include "cosmems/structure/frame_mesh.hpp"
+#include "cosmems/structure/reverse_cuthill_mckee.hpp"
+#include "cosmems/structure/structure_description.hpp"
+
+namespace cosmems {
+
+/// The assembled, constant data of a linear frame: a device's members meshed into power-series
+/// elements, each rotated from its own axes into the global ones, rigid bodies and anchors.
+///
+/// A node attached to a body is eliminated: its motion is the body's, u = u_c + theta_c x r, so
+/// a body adds six degrees of freedom and no stiff springs. Anchored degrees of freedom are
+/// removed. The carriers of motion (free nodes and bodies) are numbered in reverse
+/// Cuthill-McKee order, six degrees of freedom each, so K and the mass terms M_2j keep a narrow
+/// band (SymmetricBandMatrix) whatever the netlist's order.
+class FrameModel {
+ public:
+  using Element = FrameElement<3>;
+  using Transform = Eigen::Matrix<double, 12, 12>;
+  using Motion = Eigen::Matrix<double, 6, 1>;
+  using ElementVector = Eigen::Matrix<double, 12, 1>;
+
+  explicit FrameModel(const StructureDescription& description)
+      : description_((description.Validate(), description)),
+        units_(InternalUnits(description)),
+        bases_(description.series_order),
+        mesh_(description) {
+    for (const FrameMesh::Element& e : mesh_.elements) {
+      const StructureMember& member = description.members[e.member];
+      elements_.emplace_back(
+          ElementProperties::From(ElementSpec{e.length, member.material, member.section}, units_));
+    }
+    Number();
+    Assemble();
+  }
+
+  const StructureDescription& description() const { return description_; }
+  const UnitSystem& units() const { return units_; }
+  const FrameBases& bases() const { return bases_; }
+  const FrameMesh& mesh() const { return mesh_; }
+  const std::vector<Element>& elements() const { return elements_; }
+
+  int ElementCount() const { return static_cast<int>(elements_.size()); }
+  int FreeDofCount() const { return free_; }
+  int SeriesOrder() const { return bases_.order(); }
+
+  /// K_L, and the mass terms M_2j (bodies in M_0 only), D(w) = K - sum_j w^(2j+2) M_2j.
+  const SymmetricBandMatrix& Stiffness() const { return stiffness_; }
+  const SymmetricBandMatrix& Mass(int j) const { return mass_.at(j); }
+
+  /// Reduced index of a carrier's degree of freedom d (NodalDof order), or -1 when anchored.
+  int CarrierDof(int carrier, int d) const { return dof_[6 * carrier + d]; }
+
+  /// The element's K_L in its own axes (internal units), kept from the assembly for the
+  /// recovery of end forces.
+  const Element::Matrix& LocalStiffness(int e) const { return local_stiffness_[e]; }
+
+  /// The element's local displacements from its carriers' (a's six, then b's): u = T q.
+  const Transform& ElementTransform(int e) const { return transform_[e]; }
+  /// Reduced indices of the element's carriers' degrees of freedom, -1 where anchored.
+  const std::array<int, 12>& ElementDofs(int e) const { return element_dofs_[e]; }
+
+  /// The element's displacements in its own axes (internal units) in the reduced state d.
+  ElementVector LocalDisplacement(const Eigen::VectorXd& d, int e) const {
+    ElementVector q;
+    for (int a = 0; a < 12; ++a) q[a] = element_dofs_[e][a] >= 0 ? d[element_dofs_[e][a]] : 0.0;
+    return transform_[e] * q;
+  }
+
+  /// A carrier's motion (u, theta; global axes, internal units) in the reduced state d.
+  Motion CarrierMotion(const Eigen::VectorXd& d, int carrier) const {
+    Motion q;
+    for (int k = 0; k < 6; ++k)
+      q[k] = CarrierDof(carrier, k) >= 0 ? d[CarrierDof(carrier, k)] : 0.0;
+    return q;
+  }
+
+  /// A mesh node's motion (u, theta; global axes, internal units) in the reduced state d.
+  Motion NodeMotion(const Eigen::VectorXd& d, int node) const {
+    return NodeTransform(node) * CarrierMotion(d, mesh_.nodes[node].carrier);
+  }
+
+  /// Adds a load (force, moment about the node; global axes, internal units) at a mesh node to
+  /// the reduced load vector f: its work on the node's motion, T^T (F, C), falls on the carrier.
+  void AddNodeLoad(int node, const Motion& load, Eigen::VectorXd& f) const {
+    const Motion generalised = NodeTransform(node).transpose() * load;
+    const int carrier = mesh_.nodes[node].carrier;
+    for (int k = 0; k < 6; ++k) {
+      if (CarrierDof(carrier, k) >= 0) f[CarrierDof(carrier, k)] += generalised[k];
+    }
+  }
+
+  /// Adds a load at a carrier's reference point (a body's centre) to f.
+  void AddCarrierLoad(int carrier, const Motion& load, Eigen::VectorXd& f) const {
+    for (int k = 0; k < 6; ++k) {
+      if (CarrierDof(carrier, k) >= 0) f[CarrierDof(carrier, k)] += load[k];
+    }
+  }
+
+  /// A body's rigid mass about its centre (internal units): m I and the block's inertia tensor.
+  Eigen::Matrix<double, 6, 6> BodyMass(int body) const {
+    const StructureBody& b = description_.bodies[body];
+    const double m = b.Mass() / units_.Mass();
+    const Eigen::Vector3d s = b.size / units_.length;
+    Eigen::Matrix<double, 6, 6> out = Eigen::Matrix<double, 6, 6>::Zero();
+    out.topLeftCorner<3, 3>() = m * Eigen::Matrix3d::Identity();
+    out(3, 3) = m * (s.y() * s.y() + s.z() * s.z()) / 12.0;
+    out(4, 4) = m * (s.x() * s.x() + s.z() * s.z()) / 12.0;
+    out(5, 5) = m * (s.x() * s.x() + s.y() * s.y()) / 12.0;
+    return out;
+  }
+
+  /// How a mesh node moves with its carrier: identity for a free node, [I -[r]x; 0 I] on a body.
+  Eigen::Matrix<double, 6, 6> NodeTransform(int node) const {
+    Eigen::Matrix<double, 6, 6> t = Eigen::Matrix<double, 6, 6>::Identity();
+    t.topRightCorner<3, 3>() = -Skew(mesh_.nodes[node].offset / units_.length);
+    return t;
+  }
+
+ private:
+  // The longest member and the first member's E I_z and rho A (UnitSystem::ForBeam).
+  static UnitSystem InternalUnits(const StructureDescription& s) {
+    double length = 0.0;
+    for (const StructureMember& m : s.members) {
+      length = std::max(length, (s.nodes[m.to].position - s.nodes[m.from].position).norm());
+    }
+    const StructureMember& first = s.members.front();
+    return UnitSystem::ForBeam(length, first.material.young_modulus * first.section.SecondMomentZ(),
+                               first.material.density * first.section.Area());
+  }
+
+  // Carriers in reverse Cuthill-McKee order over the elements' connections, six dofs each.
+  void Number() {
+    const int carriers = static_cast<int>(mesh_.carriers.size());
+    std::vector<std::vector<int>> adjacency(carriers);
+    for (const FrameMesh::Element& e : mesh_.elements) {
+      const int a = mesh_.nodes[e.from].carrier;
+      const int b = mesh_.nodes[e.to].carrier;
+      if (a == b) continue;
+      adjacency[a].push_back(b);
+      adjacency[b].push_back(a);
+    }
+    for (std::vector<int>& list : adjacency) {
+      std::sort(list.begin(), list.end());
+      list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    dof_.assign(6 * carriers, -1);
+    for (int c : ReverseCuthillMcKee(adjacency)) {
+      for (int d = 0; d < 6; ++d) {
+        if (!mesh_.carriers[c].anchor[d]) dof_[6 * c + d] = free_++;
+      }
+    }
+    for (int e = 0; e < ElementCount(); ++e) {
+      const FrameMesh::Element& element = mesh_.elements[e];
+      std::array<int, 12> dofs;
+      Transform t = Transform::Zero();
+      const int ends[2] = {element.from, element.to};
+      for (int end = 0; end < 2; ++end) {
+        for (int d = 0; d < 6; ++d)
+          dofs[6 * end + d] = CarrierDof(mesh_.nodes[ends[end]].carrier, d);
+        const Eigen::Matrix<double, 6, 6> node = NodeTransform(ends[end]);
+        t.block<3, 6>(6 * end, 6 * end) = element.axes * node.topRows<3>();
+        t.block<3, 6>(6 * end + 3, 6 * end) = element.axes * node.bottomRows<3>();
+      }
+      element_dofs_.push_back(dofs);
+      transform_.push_back(t);
+    }
+  }
+
+  int Bandwidth() const {
+    int bandwidth = 0;
+    for (const std::array<int, 12>& dofs : element_dofs_) {
+      int low = free_, high = -1;
+      for (int r : dofs) {
+        if (r < 0) continue;
+        low = std::min(low, r);
+        high = std::max(high, r);
+      }
+      bandwidth = std::max(bandwidth, high - low);
+    }
+    for (int body : mesh_.body_carrier) {
+      for (int d = 0; d < 6; ++d) {
+        for (int k = 0; k < d; ++k) {
+          if (CarrierDof(body, d) >= 0 && CarrierDof(body, k) >= 0) {
+            bandwidth = std::max(bandwidth, std::abs(CarrierDof(body, d) - CarrierDof(body, k)));
+          }
+        }
+      }
+    }
+    return bandwidth;
+  }
+
+  void Assemble() {
+    const int bandwidth = Bandwidth();
+    const int order = bases_.order();
+    stiffness_ = SymmetricBandMatrix(free_, bandwidth);
+    mass_.assign(order + 1, SymmetricBandMatrix(free_, bandwidth));
+    for (int e = 0; e < ElementCount(); ++e) {
+      local_stiffness_.push_back(elements_[e].Stiffness(bases_));
+      Scatter(e, local_stiffness_.back(), stiffness_);
+      for (int j = 0; j <= order; ++j) Scatter(e, elements_[e].Mass(bases_, j), mass_[j]);
+    }
+    for (std::size_t b = 0; b < mesh_.body_carrier.size(); ++b) {
+      const int carrier = mesh_.body_carrier[b];
+      const Eigen::Matrix<double, 6, 6> m = BodyMass(static_cast<int>(b));
+      for (int k = 0; k < 6; ++k) {
+        for (int d = 0; d < 6; ++d) {
+          const int rk = CarrierDof(carrier, k);
+          const int rd = CarrierDof(carrier, d);
+          if (rk >= 0 && rd >= 0 && rk >= rd) mass_[0].Add(rk, rd, m(k, d));
+        }
+      }
+    }
+  }
+
+  // Adds T^T A T to the global matrix. Two entries of one carrier (an element whose ends share
+  // a body) land on the same global entry and are both added.
+  void Scatter(int e, const Element::Matrix& local, SymmetricBandMatrix& global) const {
+    const Transform a = transform_[e].transpose() * local * transform_[e];
+    const std::array<int, 12>& dofs = element_dofs_[e];
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        if (dofs[i] >= 0 && dofs[j] >= 0 && dofs[i] >= dofs[j])
+          global.Add(dofs[i], dofs[j], a(i, j));
+      }
+    }
+  }
+
+  StructureDescription description_;
+  UnitSystem units_;
+  FrameBases bases_;
+  FrameMesh mesh_;
+  std::vector<Element> elements_;
+  std::vector<int> dof_;
+  int free_ = 0;
+  std::vector<std::array<int, 12>> element_dofs_;
+  std::vector<Transform> transform_;
+  std::vector<Element::Matrix> local_stiffness_;
+  SymmetricBandMatrix stiffness_;
+  std::vector<SymmetricBandMatrix> mass_;
+};
+
+}  // namespace cosmems

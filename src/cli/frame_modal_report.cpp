@@ -1,0 +1,114 @@
+#include "frame_modal_report.hpp"
+
+#include <chrono>
+#include <iomanip>
+
+#include "cosmems/analysis/frame_modal_analysis.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "csv_file.hpp"
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+constexpr std::array<const char*, 6> kDirections = {"ux", "uy", "uz", "rx", "ry", "rz"};
+
+// The mode at every node and body centre, in SI, scaled as FrameModeResult::shape says.
+Eigen::MatrixXd FrameShape(const FrameModel& model, const Eigen::VectorXd& shape) {
+  const int nodes = static_cast<int>(model.description().nodes.size());
+  const int bodies = static_cast<int>(model.mesh().body_carrier.size());
+  Eigen::MatrixXd values(nodes + bodies, 6);
+  for (int n = 0; n < nodes; ++n) values.row(n) = model.NodeMotion(shape, n).transpose();
+  for (int b = 0; b < bodies; ++b) {
+    values.row(nodes + b) = model.CarrierMotion(shape, model.mesh().body_carrier[b]).transpose();
+  }
+  values.leftCols<3>() *= model.units().length;
+  double scale = values.leftCols<3>().cwiseAbs().maxCoeff();
+  if (!(scale > 1e-6 * values.rightCols<3>().cwiseAbs().maxCoeff() * model.units().length)) {
+    scale = values.rightCols<3>().cwiseAbs().maxCoeff();
+  }
+  return scale > 0.0 ? Eigen::MatrixXd(values / scale) : values;
+}
+
+}  // namespace
+
+std::unique_ptr<FrameModalReport> FrameModalReport::Run(const Scene& scene) {
+  RunHeader header = RunHeader::Start(scene);
+  ModalOptions options;
+  options.count = scene.analysis.count;
+  const auto start = std::chrono::steady_clock::now();
+  const FrameModel model(MakeStructureDescription(scene));
+  const FrameModalResult result = SolveFrameModal(model, options);
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.status = result.modal.status;
+  header.dofs = model.FreeDofCount();
+  header.model.elements = model.ElementCount();
+
+  std::vector<std::string> names;
+  for (const StructureNode& node : model.description().nodes) names.push_back(node.name);
+  for (const StructureBody& body : model.description().bodies) names.push_back(body.name);
+  std::vector<FrameModeResult> modes;
+  if (result.modal.status == Status::kOk) {
+    for (std::size_t i = 0; i < result.modal.modes.size(); ++i) {
+      const Mode& mode = result.modal.modes[i];
+      modes.push_back(
+          {mode.frequency_hz, mode.kind, result.participation[i], FrameShape(model, mode.shape)});
+    }
+    if (static_cast<int>(modes.size()) < scene.analysis.count) {
+      header.warnings.push_back("analysis.count = " + std::to_string(scene.analysis.count) +
+                                " modes asked for, but the model has only " +
+                                std::to_string(modes.size()));
+    }
+  }
+  return std::make_unique<FrameModalReport>(std::move(header), std::move(names), std::move(modes));
+}
+
+void FrameModalReport::AddResults(nlohmann::ordered_json& json) const {
+  nlohmann::ordered_json frequencies = nlohmann::ordered_json::array();
+  nlohmann::ordered_json modes = nlohmann::ordered_json::array();
+  for (const FrameModeResult& mode : modes_) {
+    frequencies.push_back(mode.frequency_hz);
+    nlohmann::ordered_json participation = nlohmann::ordered_json::object();
+    for (int k = 0; k < 6; ++k) participation[kDirections[k]] = mode.participation[k];
+    modes.push_back({{"frequency_hz", mode.frequency_hz},
+                     {"kind", ToString(mode.kind)},
+                     {"participation", participation}});
+  }
+  json["frequencies_hz"] = frequencies;
+  json["modes"] = modes;
+}
+
+void FrameModalReport::PrintResults(std::ostream& out) const {
+  out << "mode   frequency        kind        effective mass ux     uy     uz     rx     ry     "
+         "rz\n";
+  for (std::size_t i = 0; i < modes_.size(); ++i) {
+    out << std::setw(4) << i + 1 << "   " << std::setw(10)
+        << Significant(modes_[i].frequency_hz / 1e3, 6) << " kHz   " << std::setw(10) << std::left
+        << ToString(modes_[i].kind) << std::right << "           ";
+    for (double share : modes_[i].participation)
+      out << " " << std::setw(6) << Significant(share, 3);
+    out << "\n";
+  }
+}
+
+void FrameModalReport::WriteFiles(const std::filesystem::path& directory) const {
+  CsvFile summary(directory / "modes.csv", "mode,frequency_hz,kind,ux,uy,uz,rx,ry,rz");
+  CsvFile shapes(directory / "mode_shapes.csv", "mode,name,ux,uy,uz,rx,ry,rz");
+  for (std::size_t i = 0; i < modes_.size(); ++i) {
+    const std::string number = std::to_string(i + 1);
+    std::vector<std::string> row = {number, CsvFile::Number(modes_[i].frequency_hz),
+                                    ToString(modes_[i].kind)};
+    for (double share : modes_[i].participation) row.push_back(CsvFile::Number(share));
+    summary.Row(row);
+    for (std::size_t n = 0; n < names_.size(); ++n) {
+      std::vector<std::string> cells = {number, names_[n]};
+      for (int k = 0; k < 6; ++k) cells.push_back(CsvFile::Number(modes_[i].shape(n, k)));
+      shapes.Row(cells);
+    }
+  }
+  summary.Close();
+  shapes.Close();
+}
+
+}  // namespace cosmems::internal

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis_report.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/scene/scene.hpp"
+
+namespace cosmems::internal {
+
+/// A frame's linear statics: every node's and body's motion, the reactions at the anchors and
+/// the members' largest deflection, stress and axial force (doc/cli.md, static, frames).
+class FrameStaticReport final : public AnalysisReport {
+ public:
+  FrameStaticReport(RunHeader header, StructureDescription structure, FrameStaticSolution solution)
+      : AnalysisReport(std::move(header)),
+        structure_(std::move(structure)),
+        solution_(std::move(solution)) {}
+
+  static std::unique_ptr<FrameStaticReport> Run(const Scene& scene);
+
+  const FrameStaticSolution& solution() const { return solution_; }
+
+  /// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body;
+  /// reactions.csv: node, fx_n, fy_n, fz_n, mx_nm, my_nm, mz_nm at every anchored node.
+  void WriteFiles(const std::filesystem::path& directory) const override;
+
+ protected:
+  void AddResults(nlohmann::ordered_json& json) const override;
+  void PrintResults(std::ostream& out) const override;
+
+ private:
+  StructureDescription structure_;
+  FrameStaticSolution solution_;
+};
+
+}  // namespace cosmems::internal

@@ -1,0 +1,168 @@
+// Frames through the CLI: the JSON of a device's static and modal analyses against closed
+// forms, and the errors that name a netlist's entry and key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "cli_test_support.hpp"
+#include "cosmems/core/constants.hpp"
+
+namespace cosmems {
+namespace {
+
+using testing::ExpectContains;
+using testing::InvalidInput;
+using testing::RunJson;
+using testing::TempDirectory;
+using testing::WriteFile;
+
+// A 60 x 40 um plate held at its corners by four 100 um beams along x from their anchors,
+// pressed at its centre: out of plane each beam is clamped-guided, k = 4 x 12 E I / L^3.
+std::string Plate(const std::string& extra = "") {
+  std::string text = R"(
+[structure]
+kind = "frame"
+thickness = 2e-6
+
+[materials.poly]
+young_modulus = 160e9
+density = 2330.0
+
+[model]
+elements = 4
+
+[analysis]
+type = "static"
+
+[[loads.points]]
+body = "plate"
+force = [0.0, -1e-6, 0.0]
+
+[[structure.bodies]]
+name = "plate"
+center = [0.0, 0.0, 0.0]
+size = [60e-6, 2e-6, 40e-6]
+nodes = ["c0", "c1", "c2", "c3"]
+material = "poly"
+)";
+  const char* sign[4][2] = {{"-", "-"}, {"-", ""}, {"", "-"}, {"", ""}};
+  for (int i = 0; i < 4; ++i) {
+    const std::string n = std::to_string(i);
+    text += "\n[[structure.nodes]]\nname = \"a" + n + "\"\nposition = [" + sign[i][0] +
+            "130e-6, 0.0, " + sign[i][1] + "20e-6]\nsupport = \"clamped\"\n";
+    text += "\n[[structure.nodes]]\nname = \"c" + n + "\"\nposition = [" + sign[i][0] +
+            "30e-6, 0.0, " + sign[i][1] + "20e-6]\n";
+    text += "\n[[structure.beams]]\nnodes = [\"a" + n + "\", \"c" + n +
+            "\"]\nwidth = 2e-6\nmaterial = \"poly\"\n";
+  }
+  return text + extra;
+}
+
+TEST(FrameCliTest, APlateOnFourBeamsSinksByTheirStiffnessAndTheAnchorsHoldTheLoad) {
+  const TempDirectory dir;
+  WriteFile(dir.path() / "plate.toml", Plate());
+  const nlohmann::json json = RunJson({(dir.path() / "plate.toml").string()});
+  const double ei = 160e9 * 2e-6 * 8e-18 / 12;
+  const double k = 4 * 12 * ei / 1e-12;
+  const double sink = json["bodies"]["plate"]["displacement"][1];
+  EXPECT_NEAR(sink, -1e-6 / k, 1e-10 / k);  // nodally exact: round-off
+  EXPECT_NEAR(json["max_deflection"].get<double>(), 1e-6 / k, 1e-10 / k);
+  double held = 0.0;
+  for (const auto& [name, reaction] : json["reactions"].items()) {
+    held += reaction["force"][1].get<double>();
+  }
+  EXPECT_NEAR(held, 1e-6, 1e-15);
+  EXPECT_EQ(json["reactions"].size(), 4u);
+  EXPECT_EQ(json["nodes"].size(), 8u);
+  EXPECT_EQ(json["model"]["elements"], 16);
+  EXPECT_EQ(json["status"], "ok");
+}
+
+TEST(FrameCliTest, TheMicromirrorTwistsAtGJOverLAndItsPlatesInertia) {
+  const nlohmann::json json = RunJson({"micromirror"});
+  // Two 100 um torsion beams, 3 x 2 um, on a 100 x 100 x 2 um plate; the beams' own inertia
+  // (a third of rho I_p L each) moves the frequency by 1e-5, so it is taken in.
+  const double w = 3e-6, t = 2e-6, l = 100e-6;
+  const double a = std::max(w, t), c = std::min(w, t), r = c / a;
+  const double j = a * c * c * c * (1.0 / 3.0 - 0.21 * r * (1.0 - r * r * r * r / 12.0));
+  const double g = 160e9 / (2 * 1.22);
+  const double plate = 2330.0 * 100e-6 * 2e-6 * 100e-6 * (1e-8 + 4e-12) / 12;
+  const double beams = 2 * 2330.0 * (w * t * (w * w + t * t) / 12) * l / 3;
+  const double expected = std::sqrt(2 * g * j / l / (plate + beams)) / (2 * kPi);
+  const nlohmann::json& first = json["modes"][0];
+  EXPECT_EQ(first["kind"], "torsion");
+  EXPECT_NEAR(first["frequency_hz"].get<double>(), expected, 1e-6 * expected);
+  EXPECT_GT(first["participation"]["rx"].get<double>(), 0.999);
+  EXPECT_LT(first["participation"]["uy"].get<double>(), 1e-12);
+  EXPECT_EQ(json["frequencies_hz"].size(), 4u);
+}
+
+TEST(FrameCliTest, StaticAndModalFilesListEveryNodeAndBody) {
+  const TempDirectory dir;
+  WriteFile(dir.path() / "plate.toml", Plate());
+  const std::string scene = (dir.path() / "plate.toml").string();
+  ASSERT_EQ(testing::Cli({"run", scene, "--out", (dir.path() / "s").string()}).code, 0);
+  EXPECT_EQ(testing::ReadLines(dir.path() / "s" / "nodes.csv").size(), 1u + 8u + 1u);
+  EXPECT_EQ(testing::ReadLines(dir.path() / "s" / "reactions.csv").size(), 1u + 4u);
+  ASSERT_EQ(testing::Cli({"run", scene, "--set", "analysis.type=\"modal\"", "--out",
+                          (dir.path() / "m").string()})
+                .code,
+            0);
+  EXPECT_EQ(testing::ReadLines(dir.path() / "m" / "modes.csv").size(), 1u + 4u);
+  EXPECT_EQ(testing::ReadLines(dir.path() / "m" / "mode_shapes.csv").size(), 1u + 4u * 9u);
+}
+
+TEST(FrameCliTest, NetlistErrorsNameTheEntryAndTheKey) {
+  const TempDirectory dir;
+  auto error = [&](const std::string& text, const std::vector<std::string>& extra = {}) {
+    WriteFile(dir.path() / "bad.toml", text);
+    std::vector<std::string> args = {"run", (dir.path() / "bad.toml").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return InvalidInput(args);
+  };
+  std::string text = Plate();
+  text.replace(text.find("nodes = [\"a2\", \"c2\"]"), 20, "nodes = [\"a2\", \"x2\"]");
+  ExpectContains(error(text), "structure.beams[2].nodes = [\"a2\", \"x2\"]: no node \"x2\"");
+  text = Plate();
+  text.replace(text.find("body = \"plate\""), 14, "body = \"slab\"");
+  ExpectContains(error(text), "loads.points[0].body = \"slab\": no body \"slab\"");
+  ExpectContains(error(Plate("\n[[loads.points]]\nnode = \"c1\"\nbody = \"plate\"\n")),
+                 "loads.points[1]");
+  ExpectContains(error(Plate(), {"--set", "analysis.type=\"buckling\""}),
+                 "analysis.type = \"buckling\": structure.kind = \"frame\" runs the \"static\" "
+                 "and \"modal\" analyses");
+  ExpectContains(error(Plate(), {"--set", "structure.length=1e-4"}),
+                 "structure.length = 1e-04: only a cantilever or a bridge takes it");
+  ExpectContains(error(Plate("\n[loads]\ntip_force = [0.0, 1e-6, 0.0]\n")), "loads.tip_force");
+  text = Plate();
+  text.replace(text.find("material = \"poly\""), 17, "material = \"oxide\"");
+  ExpectContains(error(text), "no [materials.oxide] table");
+  text = Plate();
+  const std::string corners = "nodes = [\"c0\", \"c1\", \"c2\", \"c3\"]";
+  text.replace(text.find(corners), corners.size(), "nodes = []");
+  ExpectContains(error(text),
+                 "structure.bodies[0].nodes = []: expected an array of one or more names");
+  text = Plate();
+  text.replace(text.find("position = [-30e-6"), 18, "position = [-130e-6");
+  ExpectContains(error(text), "structure.beams[0].nodes = [\"a0\", \"c0\"]: zero length");
+  ExpectContains(error(Plate("\n[[structure.nodes]]\nname = \"c1\"\nposition = [0.0, 0.0, 0.0]\n")),
+                 "structure.nodes[8].name = \"c1\": already the name of structure.nodes[3]");
+  text = Plate();
+  text.replace(text.find("support = \"clamped\""), 19, "support = \"welded\"");
+  ExpectContains(error(text), "structure.nodes[0].support = \"welded\": expected \"free\"");
+}
+
+TEST(FrameCliTest, AFreeFloatingFrameIsANumericalFailureNotANaN) {
+  const TempDirectory dir;
+  std::string text = Plate();
+  for (std::size_t at; (at = text.find("support = \"clamped\"")) != std::string::npos;) {
+    text.replace(at, 19, "support = [\"uy\"]");
+  }
+  WriteFile(dir.path() / "loose.toml", text);
+  const nlohmann::json json = RunJson({(dir.path() / "loose.toml").string()}, 3);
+  EXPECT_EQ(json["status"], "not positive definite (is the structure supported?)");
+}
+
+}  // namespace
+}  // namespace cosmems
