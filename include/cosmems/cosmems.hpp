@@ -60,6 +60,7 @@
 #include "cosmems/rod/rod_loads.hpp"
 #include "cosmems/rod/rod_state.hpp"
 #include "cosmems/rod/so3.hpp"
+#include "cosmems/structure/folded_flexure.hpp"
 #include "cosmems/structure/frame_mesh.hpp"
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/structure/member_axes.hpp"

@@ -10,6 +10,7 @@
 #include "buckling_report.hpp"
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
+#include "cosmems/scene/netlist_scene.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "frame_modal_report.hpp"
@@ -45,8 +46,8 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A frame runs the static and modal analyses (the scene reader refuses the others).
-  if (scene.structure.kind == StructureKind::kFrame) {
+  // A device runs the static and modal analyses (the scene reader refuses the others).
+  if (IsDevice(scene.structure.kind)) {
     if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
     return internal::FrameStaticReport::Run(scene);
   }
@@ -99,6 +100,22 @@ int Run(const RunRequest& request, std::ostream& out) {
     if (ok && !directory.empty()) out << "files written to " << directory.string() << "\n";
   }
   return ok ? kSuccess : kNumericalFailure;
+}
+
+// `cosmems netlist`: a parametric device's scene as the frame netlist its generator makes.
+int PrintNetlist(const RunRequest& request, std::ostream& out) {
+  std::vector<SceneOverride> overrides;
+  for (const std::string& assignment : request.overrides) {
+    overrides.push_back(SceneOverride::Parse(assignment));
+  }
+  const Scene scene = LoadScene(request.scene, overrides);
+  if (!IsDevice(scene.structure.kind) || scene.structure.kind == StructureKind::kFrame) {
+    throw internal::CliInputError(request.scene + ": structure.kind = \"" +
+                                  ToString(scene.structure.kind) +
+                                  "\" is no parametric device (it has no netlist to print)");
+  }
+  out << NetlistScene(scene);
+  return kSuccess;
 }
 
 int ListScenes(std::ostream& out) {
@@ -154,6 +171,17 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
           },
           "DIR"));
 
+  RunRequest netlist_request;
+  CLI::App* netlist = app.add_subcommand(
+      "netlist", "Print the netlist a parametric device's scene makes, as a frame scene to edit");
+  netlist->add_option("SCENE", netlist_request.scene, "A .toml scene file or an embedded scene")
+      ->required();
+  netlist->add_option("--set", netlist_request.overrides, "Override a key, as for run")
+      ->type_name("KEY=VALUE")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+
   CLI::App* scenes = app.add_subcommand("scenes", "List the embedded scenes, one line each");
   std::string show_name;
   CLI::App* show = app.add_subcommand("show", "Print an embedded scene as TOML, to edit");
@@ -189,6 +217,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
 
   try {
     if (scenes->parsed()) return ListScenes(out);
+    if (netlist->parsed()) return PrintNetlist(netlist_request, out);
     if (show->parsed()) return ShowScene(show_name, out);
     if (keys->parsed()) {
       out << SceneKeyReference();

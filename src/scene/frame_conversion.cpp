@@ -21,6 +21,14 @@ int BodyIndex(const StructureDescription& structure, const std::string& name) {
 
 StructureDescription MakeStructureDescription(const Scene& scene) {
   const SceneStructure& s = scene.structure;
+  if (s.kind == StructureKind::kFoldedFlexure) {
+    FoldedFlexureDesign design = s.folded_flexure;
+    design.thickness = s.thickness;
+    design.material = EffectiveMaterial(scene.material);
+    design.elements = scene.model.elements;
+    design.series_order = scene.model.series_order;
+    return FoldedFlexure(design);
+  }
   StructureDescription out;
   out.series_order = scene.model.series_order;
   for (const SceneNode& node : s.nodes)

@@ -27,6 +27,8 @@ class KeyReader {
 
   /// The keys the visit named, each once: those the table may hold.
   const std::vector<std::string_view>& names() const { return names_; }
+  /// Those of them the scene's choices read (the others are refused when given).
+  const std::vector<std::string_view>& chosen() const { return chosen_names_; }
 
   void Scope(const char* owner, bool chosen, Unchosen unchosen) {
     owner_ = owner;
@@ -187,7 +189,7 @@ class KeyReader {
       KeyReader reader(r_, table, length_);
       Entry entry;
       visit(reader, entry);
-      r_.RejectUnknownKeys(table, reader.names());
+      r_.RejectUnknownKeys(table, reader.names(), reader.chosen());
       entries.push_back(std::move(entry));
     }
   }
@@ -218,6 +220,10 @@ class KeyReader {
   // key asked about is a known one.
   bool Reads(const char* name) {
     if (std::find(names_.begin(), names_.end(), name) == names_.end()) names_.push_back(name);
+    if (chosen_ &&
+        std::find(chosen_names_.begin(), chosen_names_.end(), name) == chosen_names_.end()) {
+      chosen_names_.push_back(name);
+    }
     if (chosen_) return true;
     if (unchosen_ == Unchosen::kRefused) {
       r_.Require(r_.Find(Key(name)) == nullptr, Key(name),
@@ -251,6 +257,7 @@ class KeyReader {
   bool chosen_ = true;
   Unchosen unchosen_ = Unchosen::kSkipped;
   std::vector<std::string_view> names_;
+  std::vector<std::string_view> chosen_names_;
 };
 
 }  // namespace cosmems::internal

@@ -55,7 +55,8 @@ struct IntegerRange {
 enum class Unchosen { kSkipped, kRefused };
 
 inline constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge,
-                                               StructureKind::kFrame};
+                                               StructureKind::kFrame,
+                                               StructureKind::kFoldedFlexure};
 inline constexpr std::array kTheories = {Theory::kLinear, Theory::kStretching, Theory::kCosserat};
 inline constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::kModal,
                                               AnalysisType::kBuckling,  AnalysisType::kPullin,
@@ -108,11 +109,12 @@ template <class V>
 void VisitStructure(V& v, SceneStructure& s) {
   v.RequiredChoice("kind", s.kind, kStructureKinds, "structure kind",
                    "a cantilever (clamped at x = 0, free at the tip), a bridge (both ends "
-                   "clamped), or a frame: a netlist of nodes, beams and rigid bodies");
+                   "clamped), a frame (a netlist of nodes, beams and rigid bodies), or a "
+                   "parametric device: the folded-flexure resonator");
   v.Required("thickness", s.thickness, Positive(kLength),
              "along y, normal to the substrate (a frame's default for its members)");
   v.Number("gap", s.gap, Positive(kLength), "no substrate", "from the lower face to the substrate");
-  v.Scope("a cantilever or a bridge", s.kind != StructureKind::kFrame, Unchosen::kRefused);
+  v.Scope("a cantilever or a bridge", !IsDevice(s.kind), Unchosen::kRefused);
   v.Required("length", s.length, Positive(kLength), "along x");
   v.Required("width", s.width, Positive(kLength), "along z, in the substrate's plane");
   v.Number("axial_load", s.axial_load, AnySign(kForce), "residual axial force, tension > 0");
@@ -126,6 +128,17 @@ void VisitStructure(V& v, SceneStructure& s) {
   v.Entries(
       "bodies", s.bodies, [](auto& e, SceneBody& b) { VisitBody(e, b); },
       "[[structure.bodies]]: rigid blocks (plates, shuttles, proof masses, mirrors)");
+  FoldedFlexureDesign& f = s.folded_flexure;
+  v.Scope("structure.kind = \"folded_flexure\"", s.kind == StructureKind::kFoldedFlexure,
+          Unchosen::kRefused);
+  v.Number("beam_length", f.beam_length, Positive(kLength), "each of the eight beams, along z");
+  v.Number("beam_width", f.beam_width, Positive(kLength), "in the plane, across the beams");
+  v.Number("beam_spacing", f.beam_spacing, Positive(kLength),
+           "between an inner and an outer beam's axes");
+  v.Number("truss_width", f.truss_width, Positive(kLength), "the trusses' extent along z");
+  v.Number("shuttle_width", f.shuttle_width, Positive(kLength),
+           "along x, the direction it moves in; above 2 (2 beam_width + beam_spacing)");
+  v.Number("shuttle_length", f.shuttle_length, Positive(kLength), "along z");
 }
 
 template <class V>
@@ -170,11 +183,11 @@ void VisitLoads(V& v, SceneLoads& l, SceneTimeFunction& f, TimeFunctionKind chos
   v.Required("ramp_time", f.ramp_time, Positive(kTime), "the ramp's rise time");
   v.Scope("the \"sine\" time function", chosen == TimeFunctionKind::kSine, Unchosen::kRefused);
   v.Required("frequency", f.frequency, Positive(kFrequency), "the sine's frequency");
-  v.Scope("a cantilever or a bridge", kind != StructureKind::kFrame, Unchosen::kRefused);
+  v.Scope("a cantilever or a bridge", !IsDevice(kind), Unchosen::kRefused);
   v.Vector("tip_force", l.tip_force, kForce, "at the free end (cantilever only)");
   v.Vector("midspan_force", l.midspan_force, kForce, "at x = length / 2");
   v.Vector("tip_moment", l.tip_moment, kMoment, "at the free end (cantilever only)");
-  v.Scope("structure.kind = \"frame\"", kind == StructureKind::kFrame, Unchosen::kRefused);
+  v.Scope("a device", IsDevice(kind), Unchosen::kRefused);
   v.Entries(
       "points", l.points, [](auto& e, ScenePointLoad& p) { VisitPointLoad(e, p); },
       "[[loads.points]]: a force and a moment at a node or a body's centre");

@@ -26,7 +26,7 @@ void ReadTable(const TomlFieldReader& r, const std::string& table, Visit visit,
                double length = 0.0) {
   KeyReader reader(r, table, length);
   visit(reader);
-  r.RejectUnknownKeys(table, reader.names());
+  r.RejectUnknownKeys(table, reader.names(), reader.chosen());
 }
 
 SceneStructure ReadStructure(const TomlFieldReader& r) {
@@ -37,7 +37,7 @@ SceneStructure ReadStructure(const TomlFieldReader& r) {
 }
 
 // [material]: required of a beam; a frame whose entries all name a material may leave it out
-// (CheckFrame).
+// (CheckNetlist).
 SceneMaterial ReadMaterial(const TomlFieldReader& r, StructureKind kind) {
   if (kind != StructureKind::kFrame) r.RequireTable("material");
   SceneMaterial m;
@@ -338,29 +338,15 @@ void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A frame names nodes, bodies and materials that must exist, and runs the linear static and
-// modal analyses, without surface effects (those act on a cantilever or a bridge).
-void CheckFrame(const TomlFieldReader& r, const Scene& scene) {
-  if (scene.structure.kind != StructureKind::kFrame) return;
+// A frame's netlist names nodes, bodies and materials that must exist.
+void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   const SceneStructure& s = scene.structure;
   const std::string kind = "structure.kind = \"frame\"";
   r.Require(!s.nodes.empty(), "structure.nodes", kind + " needs [[structure.nodes]]");
   r.Require(!s.beams.empty(), "structure.beams", kind + " needs [[structure.beams]]");
-  r.Require(
-      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
-      "analysis.type", kind + " runs the \"static\" and \"modal\" analyses");
-  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
-            kind + " takes the \"linear\" theory (the Cosserat rod is a single-member theory)");
-  r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
-  r.Require(!scene.effects.HasSurfaceEffect(), "effects",
-            "surface effects act on a cantilever or a bridge, not on " + kind);
   auto node_named = [&](const std::string& name) {
     return std::any_of(s.nodes.begin(), s.nodes.end(),
                        [&](const SceneNode& n) { return n.name == name; });
-  };
-  auto body_named = [&](const std::string& name) {
-    return std::any_of(s.bodies.begin(), s.bodies.end(),
-                       [&](const SceneBody& b) { return b.name == name; });
   };
   auto check_material = [&](const std::string& entry, const std::optional<std::string>& name) {
     if (name) {
@@ -389,10 +375,29 @@ void CheckFrame(const TomlFieldReader& r, const Scene& scene) {
     }
     check_material(entry, s.bodies[i].material);
   }
-  // The netlist's geometry (a member of zero length, a node on two bodies, ...), named at its
-  // key in the scene.
+}
+
+// A device (a frame, or a parametric device's netlist) runs the linear static and modal
+// analyses, without surface effects (those act on a cantilever or a bridge); its netlist must be
+// sound and its loads must name its nodes and bodies.
+void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
+  if (!IsDevice(scene.structure.kind)) return;
+  const std::string kind =
+      std::string("structure.kind = \"") + ToString(scene.structure.kind) + "\"";
+  r.Require(
+      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
+      "analysis.type", kind + " runs the \"static\" and \"modal\" analyses");
+  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
+            kind + " takes the \"linear\" theory (the Cosserat rod is a single-member theory)");
+  r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
+  r.Require(!scene.effects.HasSurfaceEffect(), "effects",
+            "surface effects act on a cantilever or a bridge, not on " + kind);
+  if (scene.structure.kind == StructureKind::kFrame) CheckNetlist(r, scene);
+  // The netlist's geometry (a member of zero length, a node on two bodies, a design parameter
+  // the generator cannot build), named at its key in the scene.
+  StructureDescription structure;
   try {
-    MakeStructureDescription(scene);
+    structure = MakeStructureDescription(scene);
   } catch (const FieldError& error) {
     r.Fail(error.field(), error.reason());
   }
@@ -401,8 +406,14 @@ void CheckFrame(const TomlFieldReader& r, const Scene& scene) {
     const std::string entry = "loads.points[" + std::to_string(i) + "]";
     r.Require(p.node.has_value() != p.body.has_value(), entry,
               "give the node or the body the load acts at (one of them)");
-    if (p.node) r.Require(node_named(*p.node), entry + ".node", "no node \"" + *p.node + "\"");
-    if (p.body) r.Require(body_named(*p.body), entry + ".body", "no body \"" + *p.body + "\"");
+    if (p.node) {
+      r.Require(structure.FindNode(*p.node) >= 0, entry + ".node", "no node \"" + *p.node + "\"");
+    }
+    if (p.body) {
+      r.Require(std::any_of(structure.bodies.begin(), structure.bodies.end(),
+                            [&](const StructureBody& b) { return b.name == *p.body; }),
+                entry + ".body", "no body \"" + *p.body + "\"");
+    }
   }
 }
 
@@ -422,7 +433,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   scene.effects = ReadEffects(r, scene.structure);
   scene.analysis = ReadAnalysis(r);
   scene.device = ReadDevice(r);
-  CheckFrame(r, scene);
+  CheckDevice(r, scene);
   CheckLoads(r, scene);
   CheckTransient(r, scene);
   CheckStretching(r, scene);

@@ -74,6 +74,17 @@ void TomlFieldReader::RejectUnknownKeys(const std::string& table,
   }
 }
 
+void TomlFieldReader::RejectUnknownKeys(const std::string& table,
+                                        const std::vector<std::string_view>& known,
+                                        const std::vector<std::string_view>& listed) const {
+  const toml::table& entries = *Find(table)->as_table();
+  for (const auto& [key, value] : entries) {
+    if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
+      Fail(JoinKey(table, key.str()), value, "unknown key (expected " + PlainList(listed) + ")");
+    }
+  }
+}
+
 std::vector<std::string> TomlFieldReader::Keys(const std::string& table) const {
   std::vector<std::string> keys;
   for (const auto& [key, value] : *Find(table)->as_table()) keys.emplace_back(key.str());

@@ -46,6 +46,9 @@ class TomlFieldReader {
   /// not in `known`.
   void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
                          std::string_view noun = "key") const;
+  /// The same, the message listing only `listed` (the keys the scene's choices read).
+  void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
+                         const std::vector<std::string_view>& listed) const;
 
   /// The keys of the table at `table`, in the file's order.
   std::vector<std::string> Keys(const std::string& table) const;

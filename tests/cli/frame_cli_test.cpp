@@ -153,6 +153,42 @@ TEST(FrameCliTest, NetlistErrorsNameTheEntryAndTheKey) {
   ExpectContains(error(text), "structure.nodes[0].support = \"welded\": expected \"free\"");
 }
 
+// The folded-flexure resonator's generator from the CLI: the shuttle moves F / k along x with
+// k = 24 E I / L^3, a design parameter changes by --set, and the netlist it prints runs to the
+// same results.
+TEST(FrameCliTest, TheFoldedFlexureMovesByItsDesignsStiffnessAndPrintsItsNetlist) {
+  const double k = 2 * 160e9 * 2e-6 * 8e-18 / 1e-12;  // 2 E t w^3 / L^3
+  const nlohmann::json json = RunJson({"folded-flexure"});
+  const double moved = json["bodies"]["shuttle"]["displacement"][0];
+  EXPECT_NEAR(moved, 1e-6 / k, 1e-10 / k);
+  const nlohmann::json longer =
+      RunJson({"folded-flexure", "--set", "structure.beam_length=150e-6"});
+  EXPECT_NEAR(longer["bodies"]["shuttle"]["displacement"][0].get<double>(), moved * 1.5 * 1.5 * 1.5,
+              1e-9 * moved);
+  EXPECT_EQ(json["model"]["elements"], 80);
+
+  const testing::CliOutcome netlist = testing::Cli({"netlist", "folded-flexure"});
+  ASSERT_EQ(netlist.code, 0) << netlist.err;
+  ExpectContains(netlist.out, "kind = \"frame\"");
+  const TempDirectory dir;
+  WriteFile(dir.path() / "netlist.toml", netlist.out);
+  const nlohmann::json again = RunJson({(dir.path() / "netlist.toml").string()});
+  for (const auto& [name, node] : json["nodes"].items()) {
+    for (int k3 = 0; k3 < 3; ++k3) {
+      EXPECT_NEAR(again["nodes"][name]["displacement"][k3].get<double>(),
+                  node["displacement"][k3].get<double>(), 1e-12 * moved)
+          << name;
+    }
+  }
+  EXPECT_EQ(again["reactions"].size(), json["reactions"].size());
+
+  ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "structure.shuttle_width=10e-6"}),
+                 "structure.shuttle_width = 1e-05: too narrow for the beams");
+  ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "structure.length=1e-4"}),
+                 "only a cantilever or a bridge takes it");
+  ExpectContains(InvalidInput({"netlist", "micromirror"}), "is no parametric device");
+}
+
 TEST(FrameCliTest, AFreeFloatingFrameIsANumericalFailureNotANaN) {
   const TempDirectory dir;
   std::string text = Plate();

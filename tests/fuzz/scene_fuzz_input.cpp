@@ -40,7 +40,7 @@ void ConvertFrame(const Scene& scene) {
 // Every conversion the CLI makes, and the model it builds: a scene the loader accepts must
 // convert and build without an error (the loader promises validated scenes).
 void Convert(const Scene& scene) {
-  if (scene.structure.kind == StructureKind::kFrame) {
+  if (IsDevice(scene.structure.kind)) {
     ConvertFrame(scene);
     return;
   }

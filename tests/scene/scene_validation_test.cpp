@@ -254,7 +254,8 @@ INSTANTIATE_TEST_SUITE_P(
     UnknownNames, SceneValidationTest,
     ::testing::Values(
         BadScene{"kind", With("structure.kind", "\"plate\""), "structure.kind = \"plate\"",
-                 "unknown structure kind (expected \"cantilever\", \"bridge\" or \"frame\")"},
+                 "unknown structure kind (expected \"cantilever\", \"bridge\", \"frame\" or "
+                 "\"folded_flexure\")"},
         BadScene{"theory", With("model.theory", "\"foo\""), "model.theory = \"foo\"",
                  "unknown theory (expected \"linear\", \"stretching\" or \"cosserat\")"},
         BadScene{"analysis", With("analysis.type", "\"harmonic\""), "analysis.type = \"harmonic\"",
@@ -268,8 +269,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown table (expected structure, material,"},
         BadScene{"root_key", With("title", "\"my beam\""), "title = \"my beam\"", "unknown table"},
         BadScene{"structure_typo", With("structure.lenght", "2e-4"), "structure.lenght = 2e-04",
-                 "unknown key (expected kind, thickness, gap, length, width, axial_load, nodes, "
-                 "beams or bodies)"},
+                 "unknown key (expected kind, thickness, gap, length, width or axial_load)"},
         BadScene{"material_typo", With("material.poisson", "0.3"), "material.poisson = 0.3",
                  "unknown key"},
         BadScene{"model_typo", With("model.element", "10"), "model.element = 10", "unknown key"},

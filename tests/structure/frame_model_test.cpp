@@ -212,6 +212,30 @@ TEST(FrameStaticTest, RigidBodiesGiveTheClosedFormsOfGuidedBeams) {
   ExpectStaticMatchesOracle(flexure, pull);
 }
 
+TEST(FrameStaticTest, TheFoldedFlexureGeneratorBuildsItsDesignsStiffness) {
+  FoldedFlexureDesign design;
+  design.material = Poly();
+  design.beam_length = 150e-6;
+  design.beam_width = 3e-6;
+  design.elements = 3;
+  const StructureDescription s = FoldedFlexure(design);
+  EXPECT_EQ(s.members.size(), 8u);
+  EXPECT_EQ(s.bodies.back().name, "shuttle");
+  FrameLoadCase pull;
+  pull.points.push_back({-1, 2, {1e-6, 0, 0}, {0, 0, 0}});
+  const FrameStaticSolution pulled = SolveFrameStatic(FrameModel(s), pull);
+  ASSERT_EQ(pulled.status, Status::kOk);
+  // 24 E I / L^3: each beam clamped-guided (the trusses turn by nothing under a pull along x).
+  EXPECT_NEAR(1e-6 / pulled.bodies[2][0], design.Stiffness(), 1e-10 * design.Stiffness());
+  design.shuttle_width = 10e-6;
+  try {
+    FoldedFlexure(design);
+    ADD_FAILURE() << "a shuttle narrower than its beams was built";
+  } catch (const FieldError& error) {
+    EXPECT_EQ(error.field(), "structure.shuttle_width");
+  }
+}
+
 TEST(FrameStaticTest, AMechanismIsAStatusAndBadNetlistsNameTheirEntry) {
   StructureDescription floating = LFrame();
   floating.nodes[0].anchor = AnchorMask{};

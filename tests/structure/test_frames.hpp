@@ -68,36 +68,14 @@ inline oracle::Frame ToOracle(const StructureDescription& s) {
   return frame;
 }
 
-/// Tang, Nguyen and Howe's folded-flexure resonator: a shuttle (40 x 2 x 40 um) on four folded
-/// beam pairs of length `length` along z, their outer ends joined by two rigid trusses, anchored
-/// beside the shuttle. Along x each beam is clamped-guided, two in series per pair and four
-/// pairs in parallel: k_x = 24 E I_y / L^3.
+/// The folded-flexure resonator of polysilicon (the library's generator, FoldedFlexure) with
+/// beams of `length` meshed into `elements` each.
 inline StructureDescription FoldedFlexure(double length, int elements) {
-  StructureDescription s;
-  const double half = 20e-6, inner = 12e-6, outer = 16e-6;
-  std::vector<int> shuttle;
-  for (int side_z = -1; side_z <= 1; side_z += 2) {
-    std::vector<int> truss;
-    for (int side_x = -1; side_x <= 1; side_x += 2) {
-      const std::string tag = std::to_string(side_x + 1) + std::to_string(side_z + 1);
-      const int anchor =
-          AddNode(s, "anchor" + tag, {side_x * inner, 0, side_z * half}, Support::kClamped);
-      const int joint = AddNode(s, "shuttle" + tag, {side_x * outer, 0, side_z * half});
-      const int truss_inner =
-          AddNode(s, "truss_in" + tag, {side_x * inner, 0, side_z * (half + length)});
-      const int truss_outer =
-          AddNode(s, "truss_out" + tag, {side_x * outer, 0, side_z * (half + length)});
-      AddBeam(s, anchor, truss_inner, elements);
-      AddBeam(s, truss_outer, joint, elements);
-      shuttle.push_back(joint);
-      truss.push_back(truss_inner);
-      truss.push_back(truss_outer);
-    }
-    AddBody(s, side_z < 0 ? "truss_low" : "truss_high", {0, 0, side_z * (half + length + 2e-6)},
-            {40e-6, 2e-6, 4e-6}, truss);
-  }
-  AddBody(s, "shuttle", {0, 0, 0}, {40e-6, 2e-6, 40e-6}, shuttle);
-  return s;
+  FoldedFlexureDesign design;
+  design.beam_length = length;
+  design.material = Poly();
+  design.elements = elements;
+  return cosmems::FoldedFlexure(design);
 }
 
 }  // namespace cosmems::test

@@ -71,16 +71,20 @@ inline BeamDescription UniformBeam(double length, const Material& material,
 }
 
 /// The structures a scene names: "cantilever" (clamped at x = 0), "bridge" (clamped-clamped),
-/// and "frame", a netlist of members and bodies (StructureDescription), which is no one beam.
-enum class StructureKind { kCantilever, kBridge, kFrame };
+/// and the devices, netlists of members and bodies (StructureDescription), no one beam: "frame"
+/// (the netlist written out) and the parametric "folded_flexure".
+enum class StructureKind { kCantilever, kBridge, kFrame, kFoldedFlexure };
 
-/// The cantilever or the bridge as a chain of equal elements; a frame is refused.
+/// Whether the structure is a device (a netlist), not one beam.
+constexpr bool IsDevice(StructureKind kind) {
+  return kind == StructureKind::kFrame || kind == StructureKind::kFoldedFlexure;
+}
+
+/// The cantilever or the bridge as a chain of equal elements; a device is refused.
 inline BeamDescription MakeStructure(StructureKind kind, double length, const Material& material,
                                      const RectangularSection& section, int elements,
                                      int series_order) {
-  if (kind == StructureKind::kFrame) {
-    throw std::invalid_argument("structure.kind = \"frame\": a netlist, not one beam");
-  }
+  if (IsDevice(kind)) throw std::invalid_argument("structure.kind: a device, not one beam");
   BeamDescription beam = UniformBeam(length, material, section, elements, series_order);
   beam.supports.front() = Support::kClamped;
   if (kind == StructureKind::kBridge) beam.supports.back() = Support::kClamped;

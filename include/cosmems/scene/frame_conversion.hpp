@@ -6,11 +6,12 @@
 
 namespace cosmems {
 
-// From a validated frame scene (structure.kind = "frame") to the core's netlist, in SI.
+// From a validated device scene (IsDevice(structure.kind)) to the core's netlist, in SI.
 
-/// The scene's nodes, beams and bodies with their names resolved to indices: each beam's
+/// A frame's nodes, beams and bodies with their names resolved to indices (each beam's
 /// thickness, element count and material default to structure.thickness, model.elements and
-/// [material]; a body's density is its material's. Validated (StructureDescription::Validate).
+/// [material]; a body's density is its material's), or the netlist a parametric device's
+/// generator makes of its design parameters. Validated (StructureDescription::Validate).
 StructureDescription MakeStructureDescription(const Scene& scene);
 
 /// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.

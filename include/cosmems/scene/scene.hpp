@@ -8,6 +8,7 @@
 
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/scene/scene_effects.hpp"
+#include "cosmems/structure/folded_flexure.hpp"
 #include "cosmems/structure/structure_description.hpp"
 
 namespace cosmems {
@@ -47,7 +48,7 @@ enum class TimeFunctionKind {
   kSine,  ///< "sine": times sin(2 pi frequency t)
 };
 
-/// The scene-file spelling: "cantilever" | "bridge" | "frame".
+/// The scene-file spelling: "cantilever" | "bridge" | "frame" | "folded_flexure".
 constexpr const char* ToString(StructureKind kind) {
   switch (kind) {
     case StructureKind::kCantilever:
@@ -56,6 +57,8 @@ constexpr const char* ToString(StructureKind kind) {
       return "bridge";
     case StructureKind::kFrame:
       return "frame";
+    case StructureKind::kFoldedFlexure:
+      return "folded_flexure";
   }
   return "unknown";
 }
@@ -186,6 +189,9 @@ struct SceneStructure {
   std::vector<SceneNode> nodes;   ///< frames
   std::vector<SceneBeam> beams;   ///< frames
   std::vector<SceneBody> bodies;  ///< frames
+  /// kind = "folded_flexure": its geometry (the thickness, material, elements per beam and
+  /// series order come from structure.thickness, [material] and [model]).
+  FoldedFlexureDesign folded_flexure;
 };
 
 /// [material]: an isotropic linear-elastic material.

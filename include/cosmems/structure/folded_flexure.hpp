@@ -34,9 +34,10 @@ struct FoldedFlexureDesign {
   }
 };
 
-/// The folded flexure's netlist: nodes "anchor_<side>", "joint_<side>" (on the shuttle),
-/// "truss_in_<side>", "truss_out_<side>" for the sides "xz" of {"-", "+"}²; bodies "truss_low",
-/// "truss_high" (z < 0 and z > 0) and "shuttle", centred at the origin. Throws FieldError naming
+/// The folded flexure's netlist: nodes "anchor_SIDE", "joint_SIDE" (on the shuttle),
+/// "truss_in_SIDE", "truss_out_SIDE" for SIDE "left_low", "right_low", "left_high", "right_high"
+/// (x < 0 or > 0, z < 0 or > 0); bodies "truss_low", "truss_high" and "shuttle", centred at the
+/// origin. Throws FieldError naming
 /// the structure key of a parameter out of its range.
 inline StructureDescription FoldedFlexure(const FoldedFlexureDesign& d) {
   auto positive = [](const char* key, double value) {
@@ -69,7 +70,8 @@ inline StructureDescription FoldedFlexure(const FoldedFlexureDesign& d) {
   for (int side_z : {-1, 1}) {
     std::vector<int> truss_nodes;
     for (int side_x : {-1, 1}) {
-      const std::string side = std::string(side_x < 0 ? "-" : "+") + (side_z < 0 ? "-" : "+");
+      const std::string side =
+          std::string(side_x < 0 ? "left" : "right") + (side_z < 0 ? "_low" : "_high");
       const int anchor =
           node("anchor_" + side, side_x * anchor_x, side_z * edge, Support::kClamped);
       const int joint = node("joint_" + side, side_x * joint_x, side_z * edge, Support::kFree);

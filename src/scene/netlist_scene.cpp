@@ -1,0 +1,89 @@
+#include "cosmems/scene/netlist_scene.hpp"
+
+#include <sstream>
+
+#include "cosmems/scene/frame_conversion.hpp"
+#include "toml_format.hpp"
+
+namespace cosmems {
+namespace {
+
+// A TOML float that reads back to the same double ("20" would read as an integer).
+std::string Float(double value) {
+  std::string text = internal::FormatNumber(value + 0.0);
+  if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
+  return text;
+}
+
+std::string Vector(const Eigen::Vector3d& v) {
+  return "[" + Float(v.x()) + ", " + Float(v.y()) + ", " + Float(v.z()) + "]";
+}
+
+std::string Quoted(const std::string& text) { return "\"" + text + "\""; }
+
+// A named support when the anchor is one, else the list of its fixed dofs.
+std::string SupportText(const AnchorMask& anchor) {
+  constexpr const char* kNames[] = {"free", "clamped", "pinned", "guided"};
+  constexpr Support kSupports[] = {Support::kFree, Support::kClamped, Support::kPinned,
+                                   Support::kGuided};
+  for (int i = 0; i < 4; ++i) {
+    if (AnchorOf(kSupports[i]) == anchor) return Quoted(kNames[i]);
+  }
+  constexpr const char* kDofs[] = {"ux", "uy", "uz", "rx", "ry", "rz"};
+  std::string list;
+  for (int d = 0; d < 6; ++d) {
+    if (anchor[d]) list += (list.empty() ? "" : ", ") + Quoted(kDofs[d]);
+  }
+  return "[" + list + "]";
+}
+
+}  // namespace
+
+std::string NetlistScene(const Scene& scene) {
+  const StructureDescription s = MakeStructureDescription(scene);
+  std::ostringstream out;
+  out << "# " << scene.source << " (structure.kind = \"" << ToString(scene.structure.kind)
+      << "\") as a frame netlist to edit\n\n";
+  out << "[structure]\nkind = \"frame\"\nthickness = " << Float(scene.structure.thickness) << "\n";
+  if (scene.structure.gap) out << "gap = " << Float(*scene.structure.gap) << "\n";
+  for (const StructureNode& node : s.nodes) {
+    out << "\n[[structure.nodes]]\nname = " << Quoted(node.name)
+        << "\nposition = " << Vector(node.position) << "\n";
+    if (node.anchor != AnchorMask{}) out << "support = " << SupportText(node.anchor) << "\n";
+  }
+  for (const StructureMember& m : s.members) {
+    out << "\n[[structure.beams]]\nnodes = [" << Quoted(s.nodes[m.from].name) << ", "
+        << Quoted(s.nodes[m.to].name) << "]\nwidth = " << Float(m.section.width)
+        << "\nthickness = " << Float(m.section.thickness) << "\nelements = " << m.elements << "\n";
+    if (m.thickness_direction != Eigen::Vector3d::UnitY()) {
+      out << "thickness_direction = " << Vector(m.thickness_direction) << "\n";
+    }
+  }
+  for (const StructureBody& b : s.bodies) {
+    out << "\n[[structure.bodies]]\nname = " << Quoted(b.name) << "\ncenter = " << Vector(b.center)
+        << "\nsize = " << Vector(b.size) << "\nnodes = [";
+    for (std::size_t i = 0; i < b.nodes.size(); ++i) {
+      out << (i > 0 ? ", " : "") << Quoted(s.nodes[b.nodes[i]].name);
+    }
+    out << "]\n";
+  }
+  const SceneMaterial& material = scene.material;
+  out << "\n[material]\nyoung_modulus = " << Float(material.young_modulus)
+      << "\ndensity = " << Float(material.density)
+      << "\npoisson_ratio = " << Float(material.poisson_ratio)
+      << "\nplate_modulus = " << (material.plate_modulus ? "true" : "false") << "\n";
+  out << "\n[model]\nelements = " << scene.model.elements
+      << "\nseries_order = " << scene.model.series_order << "\n";
+  out << "\n[loads]\ndistributed = " << Vector(scene.loads.distributed) << "\n";
+  for (const ScenePointLoad& p : scene.loads.points) {
+    out << "\n[[loads.points]]\n"
+        << (p.node ? "node = " + Quoted(*p.node) : "body = " + Quoted(*p.body))
+        << "\nforce = " << Vector(p.force) << "\nmoment = " << Vector(p.moment) << "\n";
+  }
+  out << "\n[analysis]\ntype = \"" << ToString(scene.analysis.type) << "\"\n";
+  if (scene.analysis.type == AnalysisType::kModal)
+    out << "count = " << scene.analysis.count << "\n";
+  return out.str();
+}
+
+}  // namespace cosmems
