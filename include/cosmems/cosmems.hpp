@@ -8,6 +8,7 @@
 #include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/fold_search.hpp"
+#include "cosmems/analysis/frame_buckling_analysis.hpp"
 #include "cosmems/analysis/frame_modal_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/modal_analysis.hpp"

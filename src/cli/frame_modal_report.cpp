@@ -6,29 +6,13 @@
 #include "cosmems/analysis/frame_modal_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "csv_file.hpp"
+#include "frame_shape.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
 namespace {
 
 constexpr std::array<const char*, 6> kDirections = {"ux", "uy", "uz", "rx", "ry", "rz"};
-
-// The mode at every node and body centre, in SI, scaled as FrameModeResult::shape says.
-Eigen::MatrixXd FrameShape(const FrameModel& model, const Eigen::VectorXd& shape) {
-  const int nodes = static_cast<int>(model.description().nodes.size());
-  const int bodies = static_cast<int>(model.mesh().body_carrier.size());
-  Eigen::MatrixXd values(nodes + bodies, 6);
-  for (int n = 0; n < nodes; ++n) values.row(n) = model.NodeMotion(shape, n).transpose();
-  for (int b = 0; b < bodies; ++b) {
-    values.row(nodes + b) = model.CarrierMotion(shape, model.mesh().body_carrier[b]).transpose();
-  }
-  values.leftCols<3>() *= model.units().length;
-  double scale = values.leftCols<3>().cwiseAbs().maxCoeff();
-  if (!(scale > 1e-6 * values.rightCols<3>().cwiseAbs().maxCoeff() * model.units().length)) {
-    scale = values.rightCols<3>().cwiseAbs().maxCoeff();
-  }
-  return scale > 0.0 ? Eigen::MatrixXd(values / scale) : values;
-}
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "cosmems/scene/netlist_scene.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "frame_buckling_report.hpp"
 #include "frame_modal_report.hpp"
 #include "frame_static_report.hpp"
 #include "haptic_report.hpp"
@@ -46,9 +47,12 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs the static and modal analyses (the scene reader refuses the others).
+  // A device runs the static, modal and buckling analyses (the scene reader refuses the others).
   if (IsDevice(scene.structure.kind)) {
     if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
+    if (scene.analysis.type == AnalysisType::kBuckling) {
+      return internal::FrameBucklingReport::Run(scene);
+    }
     return internal::FrameStaticReport::Run(scene);
   }
   switch (scene.analysis.type) {

@@ -377,16 +377,23 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A device (a frame, or a parametric device's netlist) runs the linear static and modal
-// analyses, without surface effects (those act on a cantilever or a bridge); its netlist must be
-// sound and its loads must name its nodes and bodies.
+// A device (a frame, or a parametric device's netlist) runs the linear static, modal and
+// buckling analyses, without surface effects (those act on a cantilever or a bridge); its netlist
+// must be sound and its loads must name its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
       std::string("structure.kind = \"") + ToString(scene.structure.kind) + "\"";
-  r.Require(
-      scene.analysis.type == AnalysisType::kStatic || scene.analysis.type == AnalysisType::kModal,
-      "analysis.type", kind + " runs the \"static\" and \"modal\" analyses");
+  const AnalysisType type = scene.analysis.type;
+  r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
+                type == AnalysisType::kBuckling,
+            "analysis.type", kind + " runs the \"static\", \"modal\" and \"buckling\" analyses");
+  r.Require(type != AnalysisType::kBuckling || !scene.loads.points.empty() ||
+                !scene.loads.distributed.isZero(0.0),
+            "analysis.type",
+            "\"buckling\" of " + kind +
+                " finds the factor of its loads that buckles it: give [[loads.points]] or "
+                "loads.distributed");
   r.Require(scene.model.theory == Theory::kLinear, "model.theory",
             kind + " takes the \"linear\" theory (the Cosserat rod is a single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");

@@ -129,9 +129,9 @@ TEST(FrameCliTest, NetlistErrorsNameTheEntryAndTheKey) {
   ExpectContains(error(text), "loads.points[0].body = \"slab\": no body \"slab\"");
   ExpectContains(error(Plate("\n[[loads.points]]\nnode = \"c1\"\nbody = \"plate\"\n")),
                  "loads.points[1]");
-  ExpectContains(error(Plate(), {"--set", "analysis.type=\"buckling\""}),
-                 "analysis.type = \"buckling\": structure.kind = \"frame\" runs the \"static\" "
-                 "and \"modal\" analyses");
+  ExpectContains(error(Plate(), {"--set", "analysis.type=\"release\""}),
+                 "analysis.type = \"release\": structure.kind = \"frame\" runs the \"static\", "
+                 "\"modal\" and \"buckling\" analyses");
   ExpectContains(error(Plate(), {"--set", "structure.length=1e-4"}),
                  "structure.length = 1e-04: only a cantilever or a bridge takes it");
   ExpectContains(error(Plate("\n[loads]\ntip_force = [0.0, 1e-6, 0.0]\n")), "loads.tip_force");
@@ -187,6 +187,53 @@ TEST(FrameCliTest, TheFoldedFlexureMovesByItsDesignsStiffnessAndPrintsItsNetlist
   ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "structure.length=1e-4"}),
                  "only a cantilever or a bridge takes it");
   ExpectContains(InvalidInput({"netlist", "micromirror"}), "is no parametric device");
+}
+
+// A column standing on the substrate, fixed at its foot and pressed at its top: the load factor
+// that buckles it against Euler's pi^2 E I / (4 L^2) with the weaker bending (along x, the
+// thickness direction it names); a device its loads do not compress does not buckle.
+TEST(FrameCliTest, AColumnBucklesAtEulersLoadAndAPulledShuttleNever) {
+  const TempDirectory dir;
+  WriteFile(dir.path() / "column.toml", R"(
+[structure]
+kind = "frame"
+thickness = 2e-6
+
+[[structure.nodes]]
+name = "foot"
+position = [0.0, 0.0, 0.0]
+support = "clamped"
+
+[[structure.nodes]]
+name = "top"
+position = [0.0, 100e-6, 0.0]
+
+[[structure.beams]]
+nodes = ["foot", "top"]
+width = 3e-6
+thickness_direction = [1.0, 0.0, 0.0]
+
+[material]
+young_modulus = 160e9
+density = 2330.0
+
+[[loads.points]]
+node = "top"
+force = [0.0, -1e-6, 0.0]
+
+[analysis]
+type = "buckling"
+)");
+  const nlohmann::json json = RunJson({(dir.path() / "column.toml").string()});
+  const double euler = kPi * kPi * 160e9 * (3e-6 * 8e-18 / 12) / (4 * 1e-8);
+  // 20 Hermite elements with the consistent geometric stiffness: within 1e-7 of Euler's load.
+  EXPECT_NEAR(json["critical_load_n"].get<double>(), euler, 1e-7 * euler);
+  EXPECT_NEAR(json["load_factor"].get<double>(), euler / 1e-6, 1e-7 * euler / 1e-6);
+
+  const nlohmann::json pulled =
+      RunJson({"folded-flexure", "--set", "analysis.type=\"buckling\""}, 3);
+  EXPECT_EQ(pulled["status"], "not converged");
+  ExpectContains(pulled["warnings"].dump(), "the loads compress no member");
 }
 
 TEST(FrameCliTest, AFreeFloatingFrameIsANumericalFailureNotANaN) {

@@ -379,6 +379,26 @@ TEST(FrameModalTest, TheTorsionalMirrorRingsAtGJOverLAndThePlatesInertia) {
   EXPECT_GT(modes.participation[i][3], 0.9);  // a rotation about x
 }
 
+// A column standing along y under a compressive load at its top buckles at the load the
+// BeamModel of the same cantilever finds (the same elements: round-off) and near Euler's.
+TEST(FrameBucklingTest, ANetlistColumnBucklesAtTheBeamsLoad) {
+  StructureDescription s;
+  AddNode(s, "foot", {0, 0, 0}, Support::kClamped);
+  AddNode(s, "top", {0, kL, 0});
+  const RectangularSection section{3e-6, 2e-6};
+  AddBeam(s, 0, 1, 10, section, Eigen::Vector3d::UnitX());
+  const FrameBucklingResult column = SolveFrameBuckling(FrameModel(s), NodeLoad(1, {0, -1e-6, 0}));
+  ASSERT_EQ(column.status, Status::kOk);
+  const BucklingResult beam = SolveBuckling(
+      BeamModel<3>(MakeStructure(StructureKind::kCantilever, kL, Poly(), section, 10, 1)));
+  const double expected = beam.modes.at(0).critical_load_n;
+  EXPECT_NEAR(column.critical_load_n, expected, 1e-9 * expected);
+  EXPECT_NEAR(column.load_factor, expected / 1e-6, 1e-9 * expected / 1e-6);
+  EXPECT_NEAR(column.axial_force_n[9], -1e-6, 1e-15);
+  const double euler = kPi * kPi * Poly().young_modulus * section.SecondMomentZ() / (4 * kL * kL);
+  EXPECT_NEAR(column.critical_load_n, euler, 1e-6 * euler);
+}
+
 // A netlist of the reference cantilever and the BeamModel of the same beam give the same
 // statics and frequencies to round-off; rotated in the plane, translated or scaled, a frame
 // gives the same relative answers.

@@ -30,20 +30,19 @@ struct BucklingResult {
   int iterations = 0;
 };
 
-/// The critical compressive loads of a straight beam: (K_L - mu G_0) x = 0, the axial force
-/// N = -mu at which the geometric stiffness cancels the elastic one. The loads do not depend on
-/// the description's own axial_load: they are the total compressive force the beam can carry.
+/// The lowest positive eigenvalues mu of (K - mu G) x = 0, each mode's critical_load_n set to
+/// mu times `scale`: the loads at which the geometric stiffness G cancels the elastic K.
 ///
-/// Subspace iteration on K_L^-1 G_0 (one band back-solve per vector and sweep) with Rayleigh-Ritz
-/// on the projected pencil (Q^T G_0 Q, Q^T K_L Q), whose largest eigenvalues are 1/mu; mode i
-/// converges as mu_i / mu_(q+1) per sweep. G_0 is only semi-definite (the axial and torsion
-/// fields carry none), so the pencil is solved with K_L, which is definite, on the right.
-template <int Dim>
-BucklingResult SolveBuckling(const BeamModel<Dim>& model, const BucklingOptions& options = {}) {
+/// Subspace iteration on K^-1 G (one band back-solve per vector and sweep) with Rayleigh-Ritz on
+/// the projected pencil (Q^T G Q, Q^T K Q), whose largest eigenvalues are 1/mu; mode i converges
+/// as mu_i / mu_(q+1) per sweep. G may be semi-definite (a beam's axial and torsion fields carry
+/// none) or indefinite (a frame's members in tension), so the pencil is solved with K, which is
+/// definite, on the right; no positive 1/mu left means nothing buckles (kNotConverged).
+inline BucklingResult SolveBucklingPencil(const SymmetricBandMatrix& k,
+                                          const SymmetricBandMatrix& g, double scale,
+                                          const BucklingOptions& options = {}) {
   BucklingResult result;
-  const SymmetricBandMatrix& k = model.ElasticStiffness();
-  const SymmetricBandMatrix& g = model.Geometric(0);
-  const int n = model.FreeDofCount();
+  const int n = k.size();
   // K_L^-1 G_0 X has no larger rank than the degrees of freedom G_0 acts on: a subspace wider
   // than that (all 3 unknowns of a 1-element cantilever, 2 of them bending) leaves the projected
   // K_L singular.
@@ -120,9 +119,18 @@ BucklingResult SolveBuckling(const BeamModel<Dim>& model, const BucklingOptions&
     Eigen::Index largest = 0;
     shape.cwiseAbs().maxCoeff(&largest);
     shape /= shape[largest];
-    result.modes.push_back({mu[i] * model.units().force, std::move(shape)});
+    result.modes.push_back({mu[i] * scale, std::move(shape)});
   }
   return result;
+}
+
+/// The critical compressive loads of a straight beam: (K_L - mu G_0) x = 0, the axial force
+/// N = -mu at which the geometric stiffness cancels the elastic one. The loads do not depend on
+/// the description's own axial_load: they are the total compressive force the beam can carry.
+template <int Dim>
+BucklingResult SolveBuckling(const BeamModel<Dim>& model, const BucklingOptions& options = {}) {
+  return SolveBucklingPencil(model.ElasticStiffness(), model.Geometric(0), model.units().force,
+                             options);
 }
 
 }  // namespace cosmems

@@ -119,6 +119,20 @@ class FrameModel {
     return out;
   }
 
+  /// Adds T^T A T, an element's matrix A in its own axes carried onto its carriers, to `global`
+  /// (a matrix of this model's pattern). Two entries of one carrier (an element whose ends share
+  /// a body) land on the same global entry and are both added.
+  void AddElementMatrix(int e, const Element::Matrix& local, SymmetricBandMatrix& global) const {
+    const Transform a = transform_[e].transpose() * local * transform_[e];
+    const std::array<int, 12>& dofs = element_dofs_[e];
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        if (dofs[i] >= 0 && dofs[j] >= 0 && dofs[i] >= dofs[j])
+          global.Add(dofs[i], dofs[j], a(i, j));
+      }
+    }
+  }
+
   /// How a mesh node moves with its carrier: identity for a free node, [I -[r]x; 0 I] on a body.
   Eigen::Matrix<double, 6, 6> NodeTransform(int node) const {
     Eigen::Matrix<double, 6, 6> t = Eigen::Matrix<double, 6, 6>::Identity();
@@ -206,8 +220,8 @@ class FrameModel {
     mass_.assign(order + 1, SymmetricBandMatrix(free_, bandwidth));
     for (int e = 0; e < ElementCount(); ++e) {
       local_stiffness_.push_back(elements_[e].Stiffness(bases_));
-      Scatter(e, local_stiffness_.back(), stiffness_);
-      for (int j = 0; j <= order; ++j) Scatter(e, elements_[e].Mass(bases_, j), mass_[j]);
+      AddElementMatrix(e, local_stiffness_.back(), stiffness_);
+      for (int j = 0; j <= order; ++j) AddElementMatrix(e, elements_[e].Mass(bases_, j), mass_[j]);
     }
     for (std::size_t b = 0; b < mesh_.body_carrier.size(); ++b) {
       const int carrier = mesh_.body_carrier[b];
@@ -218,19 +232,6 @@ class FrameModel {
           const int rd = CarrierDof(carrier, d);
           if (rk >= 0 && rd >= 0 && rk >= rd) mass_[0].Add(rk, rd, m(k, d));
         }
-      }
-    }
-  }
-
-  // Adds T^T A T to the global matrix. Two entries of one carrier (an element whose ends share
-  // a body) land on the same global entry and are both added.
-  void Scatter(int e, const Element::Matrix& local, SymmetricBandMatrix& global) const {
-    const Transform a = transform_[e].transpose() * local * transform_[e];
-    const std::array<int, 12>& dofs = element_dofs_[e];
-    for (int i = 0; i < 12; ++i) {
-      for (int j = 0; j < 12; ++j) {
-        if (dofs[i] >= 0 && dofs[j] >= 0 && dofs[i] >= dofs[j])
-          global.Add(dofs[i], dofs[j], a(i, j));
       }
     }
   }
