@@ -21,8 +21,21 @@ std::unique_ptr<FrameModalReport> FrameModalReport::Run(const Scene& scene) {
   ModalOptions options;
   options.count = scene.analysis.count;
   const auto start = std::chrono::steady_clock::now();
-  const FrameModel model(MakeStructureDescription(scene));
-  const FrameModalResult result = SolveFrameModal(model, options);
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  FrameModalResult result;
+  if (scene.model.theory == Theory::kStretching) {
+    // About the equilibrium under the scene's loads, where stretching has stiffened the members.
+    FrameStretchingForce force(model);
+    const FrameStaticSolution deflected =
+        SolveFrameNonlinearStatic(model, force, MakeFrameLoadCase(scene, structure));
+    result.modal.status = deflected.status;
+    if (deflected.status == Status::kOk) {
+      result = SolveFrameModalAbout(model, force, deflected.displacement, options);
+    }
+  } else {
+    result = SolveFrameModal(model, options);
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.modal.status;

@@ -20,8 +20,15 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   RunHeader header = RunHeader::Start(scene);
   const auto start = std::chrono::steady_clock::now();
   StructureDescription structure = MakeStructureDescription(scene);
-  const FrameModel model(structure);
-  FrameStaticSolution solution = SolveFrameStatic(model, MakeFrameLoadCase(scene, structure));
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  const FrameLoadCase loads = MakeFrameLoadCase(scene, structure);
+  FrameStaticSolution solution;
+  if (scene.model.theory == Theory::kStretching) {
+    FrameStretchingForce force(model);
+    solution = SolveFrameNonlinearStatic(model, force, loads);
+  } else {
+    solution = SolveFrameStatic(model, loads);
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = solution.status;

@@ -47,9 +47,12 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs the static, modal and buckling analyses (the scene reader refuses the others).
+  // A device runs the static, modal, buckling and transient analyses (the scene reader refuses
+  // the others).
   if (IsDevice(scene.structure.kind)) {
     if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
+    if (scene.analysis.type == AnalysisType::kTransient)
+      return internal::TransientReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kBuckling) {
       return internal::FrameBucklingReport::Run(scene);
     }

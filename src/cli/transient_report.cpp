@@ -9,6 +9,7 @@
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
 #include "csv_file.hpp"
@@ -24,6 +25,28 @@ constexpr int kTimeDigits = 12;
 // Where uy is recorded, as JSON keys and CSV headers name it.
 const char* OutputPointName(StructureKind kind) {
   return kind == StructureKind::kCantilever ? "tip" : "midspan";
+}
+
+constexpr const char* kAxes[3] = {"x", "y", "z"};
+
+// Runs a device's frame; `results` takes the recorded points and their history.
+TransientResult RunDevice(const Scene& scene, const TransientOptions& options, int& dofs,
+                          TransientResults& results) {
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  dofs = model.FreeDofCount();
+  const std::vector<FrameRecordPoint> record = MakeFrameRecord(scene, structure);
+  std::optional<FrameStretchingForce> stretching;
+  if (scene.model.theory == Theory::kStretching) stretching.emplace(model);
+  FrameTransientResult out = RunFrameTransient(model, MakeFrameLoadCase(scene, structure), options,
+                                               record, stretching ? &*stretching : nullptr);
+  for (const FrameRecordPoint& point : record) {
+    results.recorded.push_back(point.node >= 0 ? structure.nodes[point.node].name
+                                               : structure.bodies[point.body].name);
+  }
+  results.history = std::move(out.history);
+  results.watched_component = out.watched_component;
+  return out.run;
 }
 
 // Runs the scene's model with the forces it declares; `dofs` becomes its free degrees of freedom,
@@ -77,7 +100,8 @@ std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   TransientResults results;
   const TransientResult result =
-      scene.model.theory == Theory::kCosserat ? RunRod(scene, loads, options, header.dofs)
+      IsDevice(scene.structure.kind)            ? RunDevice(scene, options, header.dofs, results)
+      : scene.model.theory == Theory::kCosserat ? RunRod(scene, loads, options, header.dofs)
       : scene.model.dimension == 2 ? RunBeam<2>(scene, loads, options, header.dofs, results)
                                    : RunBeam<3>(scene, loads, options, header.dofs, results);
   header.wall_time_s =
@@ -120,10 +144,16 @@ std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
         "\" damps too little for contact: impacts can add energy (up to 14 % measured with "
         "average acceleration); \"generalized-alpha\" with rho_inf <= 0.6 adds none");
   }
-  if (loads.points.empty() && loads.distributed.isZero(0.0)) {
-    header.warnings.push_back("the loads are all zero: the beam stays at rest");
+  const bool unloaded = IsDevice(scene.structure.kind)
+                            ? scene.loads.points.empty() && scene.loads.distributed.isZero(0.0)
+                            : loads.points.empty() && loads.distributed.isZero(0.0);
+  if (unloaded) {
+    header.warnings.push_back(std::string("the loads are all zero: the ") +
+                              (IsDevice(scene.structure.kind) ? "device" : "beam") +
+                              " stays at rest");
   }
-  if (result.status == Status::kOk && !results.contact) {
+  // A device's substrate is checked by its static analysis, over every node and body corner.
+  if (result.status == Status::kOk && !results.contact && !IsDevice(scene.structure.kind)) {
     header.WarnIfThroughSubstrate(
         std::string("the ") + OutputPointName(scene.structure.kind) + " moves",
         result.max_toward_substrate, scene.structure.gap);
@@ -139,7 +169,13 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
                           {"batch", results_.step_time.batch}};
   json["realtime_factor"] = results_.realtime_factor;
   json["stepping_realtime_factor"] = results_.stepping_realtime_factor;
-  json[std::string(OutputPointName(results_.kind)) + "_displacement_max"] = results_.max_abs_uy;
+  if (IsDevice(results_.kind)) {
+    json["displacement_max"] = results_.max_abs_uy;
+    json["watched"] = {{"point", results_.recorded.front()},
+                       {"component", std::string("u") + kAxes[results_.watched_component]}};
+  } else {
+    json[std::string(OutputPointName(results_.kind)) + "_displacement_max"] = results_.max_abs_uy;
+  }
   json["simulated_time_s"] = results_.simulated_time_s;
   json["integrator"] = ToString(results_.integrator);
   json["time_step_s"] = results_.time_step_s;
@@ -167,8 +203,13 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << "realtime factor       " << Significant(results_.realtime_factor, 3)
       << " (model set-up included), " << Significant(results_.stepping_realtime_factor, 3)
       << " for the steps alone\n";
-  const std::string label = std::string("max |uy| at ") + OutputPointName(results_.kind);
-  out << label << std::string(22 - label.size(), ' ') << Scientific(results_.max_abs_uy) << " m\n";
+  const std::string label = IsDevice(results_.kind)
+                                ? std::string("max |u") + kAxes[results_.watched_component] +
+                                      "| at " + results_.recorded.front()
+                                : std::string("max |uy| at ") + OutputPointName(results_.kind);
+  // A long node name takes the column's width; one space still parts it from the value.
+  out << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ')
+      << Scientific(results_.max_abs_uy) << " m\n";
   if (!results_.contact) return;
   PrintContact(out, *results_.contact);
   const ContactEvents& e = results_.contact_events;
@@ -177,6 +218,23 @@ void TransientReport::PrintResults(std::ostream& out) const {
 }
 
 void TransientReport::WriteFiles(const std::filesystem::path& directory) const {
+  if (IsDevice(results_.kind)) {
+    std::string columns = "time_s";
+    for (const std::string& name : results_.recorded) {
+      for (const char* axis : kAxes) columns += "," + name + "_u" + axis + "_m";
+    }
+    CsvFile csv(directory / "history.csv", columns);
+    std::vector<std::string> row;
+    for (std::size_t i = 0; i < results_.time_s.size(); ++i) {
+      row.assign(1, CsvFile::Number(results_.time_s[i], kTimeDigits));
+      for (Eigen::Index c = 0; c < results_.history.cols(); ++c) {
+        row.push_back(CsvFile::Number(results_.history(static_cast<Eigen::Index>(i), c)));
+      }
+      csv.Row(row);
+    }
+    csv.Close();
+    return;
+  }
   CsvFile csv(directory / "history.csv",
               std::string("time_s,") + OutputPointName(results_.kind) + "_uy_m");
   for (std::size_t i = 0; i < results_.time_s.size(); ++i) {

@@ -11,23 +11,37 @@ Material MaterialOf(const Scene& scene, const std::optional<std::string>& name) 
   return EffectiveMaterial(name ? scene.materials.at(*name) : scene.material);
 }
 
-int BodyIndex(const StructureDescription& structure, const std::string& name) {
-  const auto at = std::find_if(structure.bodies.begin(), structure.bodies.end(),
-                               [&](const StructureBody& b) { return b.name == name; });
-  return static_cast<int>(at - structure.bodies.begin());
+// A parametric device's netlist: its design keys, with the members' thickness, material,
+// elements and series order from structure.thickness, [material] and [model].
+template <class Design>
+StructureDescription Generate(Design design, const Scene& scene,
+                              StructureDescription (*generator)(const Design&)) {
+  design.thickness = scene.structure.thickness;
+  design.material = EffectiveMaterial(scene.material);
+  design.elements = scene.model.elements;
+  design.series_order = scene.model.series_order;
+  return generator(design);
 }
 
 }  // namespace
 
 StructureDescription MakeStructureDescription(const Scene& scene) {
   const SceneStructure& s = scene.structure;
-  if (s.kind == StructureKind::kFoldedFlexure) {
-    FoldedFlexureDesign design = s.folded_flexure;
-    design.thickness = s.thickness;
-    design.material = EffectiveMaterial(scene.material);
-    design.elements = scene.model.elements;
-    design.series_order = scene.model.series_order;
-    return FoldedFlexure(design);
+  switch (s.kind) {
+    case StructureKind::kFoldedFlexure:
+      return Generate(s.folded_flexure, scene, &FoldedFlexure);
+    case StructureKind::kCrabLeg:
+      return Generate(s.crab_leg, scene, &CrabLeg);
+    case StructureKind::kSerpentine:
+      return Generate(s.serpentine, scene, &Serpentine);
+    case StructureKind::kTorsionalMicromirror:
+      return Generate(s.torsional_micromirror, scene, &TorsionalMicromirror);
+    case StructureKind::kAccelerometer:
+      return Generate(s.accelerometer, scene, &Accelerometer);
+    case StructureKind::kCantilever:
+    case StructureKind::kBridge:
+    case StructureKind::kFrame:
+      break;  // a frame's netlist is written out, below (a beam is no device)
   }
   StructureDescription out;
   out.series_order = scene.model.series_order;
@@ -56,17 +70,41 @@ StructureDescription MakeStructureDescription(const Scene& scene) {
   return out;
 }
 
+FrameCouplings MakeFrameCouplings(const Scene& scene) {
+  return scene.model.theory == Theory::kStretching ? FrameCouplings::kStretching
+                                                   : FrameCouplings::kLinear;
+}
+
 FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure) {
   FrameLoadCase out;
   for (const ScenePointLoad& p : scene.loads.points) {
     FramePointLoad load;
     if (p.node) load.node = structure.FindNode(*p.node);
-    if (p.body) load.body = BodyIndex(structure, *p.body);
+    if (p.body) load.body = structure.FindBody(*p.body);
     load.force = p.force;
     load.moment = p.moment;
     out.points.push_back(load);
   }
   out.distributed = scene.loads.distributed;
+  return out;
+}
+
+std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,
+                                              const StructureDescription& structure) {
+  std::vector<FrameRecordPoint> named, out;
+  for (const std::string& name : scene.analysis.record) {
+    const int node = structure.FindNode(name);
+    named.push_back({node, node >= 0 ? -1 : structure.FindBody(name)});
+  }
+  for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
+    named.push_back({-1, static_cast<int>(b)});
+  }
+  for (const FrameRecordPoint& point : named) {
+    const bool listed = std::any_of(out.begin(), out.end(), [&](const FrameRecordPoint& p) {
+      return p.node == point.node && p.body == point.body;
+    });
+    if (!listed) out.push_back(point);
+  }
   return out;
 }
 

@@ -125,17 +125,13 @@ class KeyReader {
     const std::string key = Key(name);
     const toml::node* node = r_.Find(key);
     if (node == nullptr) r_.FailMissing(key);
-    const std::string expected = count > 0
-                                     ? "expected an array of " + std::to_string(count) + " names"
-                                     : "expected an array of one or more names";
-    const toml::array* array = node->as_array();
-    r_.Require(array != nullptr && (count > 0 ? array->size() == count : !array->empty()), key,
-               expected);
-    field.clear();
-    for (const toml::node& element : *array) {
-      r_.Require(element.is_string() && !element.value<std::string>()->empty(), key, expected);
-      field.push_back(*element.value<std::string>());
-    }
+    ReadNames(key, *node, count, field);
+  }
+  /// One or more names, or none when the key is absent.
+  void OptionalNames(const char* name, std::vector<std::string>& field, const char*, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    if (const toml::node* node = r_.Find(key)) ReadNames(key, *node, 0, field);
   }
   /// A support's name ("clamped", ...) or a list of the fixed dofs (["uy", "rz"]).
   void Anchor(const char* name, AnchorMask& field, const char*) {
@@ -172,6 +168,18 @@ class KeyReader {
       r_.Require(at != kDofs.end(), key, expected);
       field[at - kDofs.begin()] = true;
     }
+  }
+  /// A design key of the devices `fields` lists: read into the field of `kind`'s design, and
+  /// refused, naming those devices, for any other kind.
+  void Design(const char* name, StructureKind kind, DesignFields<double> fields,
+              const NumberRule& rule, const char* meaning) {
+    double unread = 0.0;
+    Number(name, *ScopeDesign(kind, fields, unread), rule, meaning);
+  }
+  void Design(const char* name, StructureKind kind, DesignFields<int> fields,
+              const IntegerRange& range, const char* meaning) {
+    int unread = 0;
+    Integer(name, *ScopeDesign(kind, fields, unread), range, meaning);
   }
   /// An array of tables ([[TABLE.NAME]]), each entry read by `visit` and refused unknown keys.
   template <class Entry, class Visit>
@@ -214,7 +222,33 @@ class KeyReader {
   }
 
  private:
+  // `count` names (0: one or more), each a non-empty string.
+  void ReadNames(const std::string& key, const toml::node& node, std::size_t count,
+                 std::vector<std::string>& field) {
+    const std::string expected = count > 0
+                                     ? "expected an array of " + std::to_string(count) + " names"
+                                     : "expected an array of one or more names";
+    const toml::array* array = node.as_array();
+    r_.Require(array != nullptr && (count > 0 ? array->size() == count : !array->empty()), key,
+               expected);
+    field.clear();
+    for (const toml::node& element : *array) {
+      r_.Require(element.is_string() && !element.value<std::string>()->empty(), key, expected);
+      field.push_back(*element.value<std::string>());
+    }
+  }
+
   std::string Key(const char* name) const { return table_ + "." + name; }
+
+  // The scope of one design key (its devices own it); the field to read it into, `unread` when
+  // the scene's kind is none of them.
+  template <class T>
+  T* ScopeDesign(StructureKind kind, DesignFields<T> fields, T& unread) {
+    T* field = ChosenDesign(kind, fields);
+    design_owner_ = DesignOwner(fields);
+    Scope(design_owner_.c_str(), field != nullptr, Unchosen::kRefused);
+    return field != nullptr ? field : &unread;
+  }
 
   // Whether the key is read: its owner chosen; otherwise skipped, or refused when given. Every
   // key asked about is a known one.
@@ -254,6 +288,7 @@ class KeyReader {
   std::string table_;
   double length_;
   const char* owner_ = "";
+  std::string design_owner_;  // owner_ of a design key
   bool chosen_ = true;
   Unchosen unchosen_ = Unchosen::kSkipped;
   std::vector<std::string_view> names_;

@@ -1,8 +1,10 @@
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "cosmems/scene/scene_key_reference.hpp"
@@ -33,11 +35,7 @@ class KeyReference {
     Row(name, Accepts(rule), fallback, meaning);
   }
   void Integer(const char* name, int& field, const IntegerRange& range, const char* meaning) {
-    const std::string accepts =
-        range.upper == range.lower + 1
-            ? std::to_string(range.lower) + " or " + std::to_string(range.upper)
-            : "integer, " + std::to_string(range.lower) + " … " + std::to_string(range.upper);
-    Row(name, accepts, std::to_string(field), meaning);
+    Row(name, Accepts(range), std::to_string(field), meaning);
   }
   void Flag(const char* name, bool& field, const char* meaning) {
     Row(name, "`true` \\| `false`", field ? "`true`" : "`false`", meaning);
@@ -88,8 +86,23 @@ class KeyReference {
     Row(name, count > 0 ? "`[" + std::to_string(count) + " names]`" : "`[names]`", "required",
         meaning);
   }
+  void OptionalNames(const char* name, std::vector<std::string>&, const char* fallback,
+                     const char* meaning) {
+    Row(name, "`[names]`", fallback, meaning);
+  }
   void Anchor(const char* name, AnchorMask&, const char* meaning) {
     Row(name, "a support or `[dofs]`", "`\"free\"`", meaning);
+  }
+  // One row for a design key, whatever the number of devices that read it.
+  void Design(const char* name, StructureKind, DesignFields<double> fields, const NumberRule& rule,
+              const char* meaning) {
+    DesignRow(
+        name, Accepts(rule), fields, [](double v) { return FormatNumber(v); }, meaning);
+  }
+  void Design(const char* name, StructureKind, DesignFields<int> fields, const IntegerRange& range,
+              const char* meaning) {
+    DesignRow(
+        name, Accepts(range), fields, [](int v) { return std::to_string(v); }, meaning);
   }
   // The entry's keys follow as TABLE.NAME[].KEY, in the entry's scope.
   template <class Entry, class Visit>
@@ -124,6 +137,37 @@ class KeyReference {
         break;
     }
     return range;
+  }
+  static std::string Accepts(const IntegerRange& range) {
+    return range.upper == range.lower + 1
+               ? std::to_string(range.lower) + " or " + std::to_string(range.upper)
+               : "integer, " + std::to_string(range.lower) + " … " + std::to_string(range.upper);
+  }
+  // The default, or the devices' when they differ: "1e-04 (`folded_flexure`, `crab_leg`),
+  // 2e-04 (`accelerometer`)".
+  template <class T, class Format>
+  void DesignRow(const char* name, const std::string& accepts, DesignFields<T> fields,
+                 Format format, const char* meaning) {
+    scope_ = "only " + DesignOwner(fields) + ": ";
+    std::vector<std::pair<T, std::string>> defaults;  // each value with its devices
+    for (const DesignField<T>& f : fields) {
+      const std::string kind = std::string("`") + ToString(f.kind) + "`";
+      const auto same = std::find_if(defaults.begin(), defaults.end(),
+                                     [&](const auto& d) { return d.first == *f.field; });
+      if (same == defaults.end()) {
+        defaults.emplace_back(*f.field, kind);
+      } else {
+        same->second += ", " + kind;
+      }
+    }
+    std::string text = format(defaults.front().first);
+    if (defaults.size() > 1) {
+      text.clear();
+      for (const auto& [value, kinds] : defaults) {
+        text += (text.empty() ? "" : ", ") + format(value) + " (" + kinds + ")";
+      }
+    }
+    Row(name, accepts, text, meaning);
   }
   template <class Enum, std::size_t N>
   static std::string Choices(const std::array<Enum, N>& options) {
@@ -181,7 +225,8 @@ std::string SceneKeyReference() {
   Table(out, "effects.squeeze_film", [&](auto& v) { VisitSqueezeFilm(v, squeeze_film); });
   Table(out, "analysis", [&](auto& v) {
     // As a transient sees them: another integrator's parameters refused.
-    VisitAnalysis(v, s.analysis, AnalysisType::kTransient, s.analysis.integrator);
+    VisitAnalysis(v, s.analysis, AnalysisType::kTransient, s.analysis.integrator,
+                  StructureKind::kFrame);
   });
   Table(out, "device", [&](auto& v) { VisitDevice(v, device); });
   return out;

@@ -8,15 +8,12 @@
 namespace cosmems {
 namespace {
 
-// A TOML float that reads back to the same double ("20" would read as an integer).
-std::string Float(double value) {
-  std::string text = internal::FormatNumber(value + 0.0);
-  if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
-  return text;
-}
+using internal::FormatFloat;
 
 std::string Vector(const Eigen::Vector3d& v) {
-  return "[" + Float(v.x()) + ", " + Float(v.y()) + ", " + Float(v.z()) + "]";
+  // + 0.0: a coordinate of -0 prints as 0.
+  return "[" + FormatFloat(v.x() + 0.0) + ", " + FormatFloat(v.y() + 0.0) + ", " +
+         FormatFloat(v.z() + 0.0) + "]";
 }
 
 std::string Quoted(const std::string& text) { return "\"" + text + "\""; }
@@ -44,8 +41,9 @@ std::string NetlistScene(const Scene& scene) {
   std::ostringstream out;
   out << "# " << scene.source << " (structure.kind = \"" << ToString(scene.structure.kind)
       << "\") as a frame netlist to edit\n\n";
-  out << "[structure]\nkind = \"frame\"\nthickness = " << Float(scene.structure.thickness) << "\n";
-  if (scene.structure.gap) out << "gap = " << Float(*scene.structure.gap) << "\n";
+  out << "[structure]\nkind = \"frame\"\nthickness = " << FormatFloat(scene.structure.thickness)
+      << "\n";
+  if (scene.structure.gap) out << "gap = " << FormatFloat(*scene.structure.gap) << "\n";
   for (const StructureNode& node : s.nodes) {
     out << "\n[[structure.nodes]]\nname = " << Quoted(node.name)
         << "\nposition = " << Vector(node.position) << "\n";
@@ -53,8 +51,9 @@ std::string NetlistScene(const Scene& scene) {
   }
   for (const StructureMember& m : s.members) {
     out << "\n[[structure.beams]]\nnodes = [" << Quoted(s.nodes[m.from].name) << ", "
-        << Quoted(s.nodes[m.to].name) << "]\nwidth = " << Float(m.section.width)
-        << "\nthickness = " << Float(m.section.thickness) << "\nelements = " << m.elements << "\n";
+        << Quoted(s.nodes[m.to].name) << "]\nwidth = " << FormatFloat(m.section.width)
+        << "\nthickness = " << FormatFloat(m.section.thickness) << "\nelements = " << m.elements
+        << "\n";
     if (m.thickness_direction != Eigen::Vector3d::UnitY()) {
       out << "thickness_direction = " << Vector(m.thickness_direction) << "\n";
     }
@@ -68,9 +67,9 @@ std::string NetlistScene(const Scene& scene) {
     out << "]\n";
   }
   const SceneMaterial& material = scene.material;
-  out << "\n[material]\nyoung_modulus = " << Float(material.young_modulus)
-      << "\ndensity = " << Float(material.density)
-      << "\npoisson_ratio = " << Float(material.poisson_ratio)
+  out << "\n[material]\nyoung_modulus = " << FormatFloat(material.young_modulus)
+      << "\ndensity = " << FormatFloat(material.density)
+      << "\npoisson_ratio = " << FormatFloat(material.poisson_ratio)
       << "\nplate_modulus = " << (material.plate_modulus ? "true" : "false") << "\n";
   out << "\n[model]\nelements = " << scene.model.elements
       << "\nseries_order = " << scene.model.series_order << "\n";

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <initializer_list>
 #include <optional>
 #include <string>
 
@@ -27,6 +28,9 @@ namespace cosmems::internal {
 //   Vector(NAME, Eigen::Vector3d&, Bounds, meaning)
 //   Pair(NAME, std::optional<std::array<double, 2>>&, Bounds, Bounds, meaning)
 //   Position(NAME, std::optional<double>&, meaning)       a point of the beam, in [0, length]
+//   Design(NAME, kind, {{KIND, &field}, ...}, NumberRule or IntegerRange, meaning)
+//       a parametric device's design key, one meaning for every KIND listed: read into the
+//       field of the scene's `kind` (its value is that device's default), refused for others
 // and Scope(owner, chosen, unchosen): the keys after it belong to `owner` (an analysis type, an
 // integrator, a time function); when it is not the chosen one they are skipped, or refused.
 
@@ -54,9 +58,10 @@ struct IntegerRange {
 /// or time function shows an intent the run would not follow).
 enum class Unchosen { kSkipped, kRefused };
 
-inline constexpr std::array kStructureKinds = {StructureKind::kCantilever, StructureKind::kBridge,
-                                               StructureKind::kFrame,
-                                               StructureKind::kFoldedFlexure};
+inline constexpr std::array kStructureKinds = {
+    StructureKind::kCantilever,           StructureKind::kBridge,       StructureKind::kFrame,
+    StructureKind::kFoldedFlexure,        StructureKind::kCrabLeg,      StructureKind::kSerpentine,
+    StructureKind::kTorsionalMicromirror, StructureKind::kAccelerometer};
 inline constexpr std::array kTheories = {Theory::kLinear, Theory::kStretching, Theory::kCosserat};
 inline constexpr std::array kAnalysisTypes = {AnalysisType::kStatic,    AnalysisType::kModal,
                                               AnalysisType::kBuckling,  AnalysisType::kPullin,
@@ -72,6 +77,37 @@ inline constexpr std::array kHapticIntegrators = {Integrator::kGeneralizedAlpha,
 inline constexpr std::array kInitialStates = {InitialState::kRest, InitialState::kStatic};
 inline constexpr std::array kTimeFunctions = {TimeFunctionKind::kStep, TimeFunctionKind::kRamp,
                                               TimeFunctionKind::kSine};
+
+/// A design key's field in the design of one parametric device that reads it.
+template <class T>
+struct DesignField {
+  StructureKind kind;
+  T* field;
+};
+template <class T>
+using DesignFields = std::initializer_list<DesignField<T>>;
+
+/// The field of `kind`'s design, or nullptr when that kind reads no such key.
+template <class T>
+T* ChosenDesign(StructureKind kind, DesignFields<T> fields) {
+  for (const DesignField<T>& f : fields) {
+    if (f.kind == kind) return f.field;
+  }
+  return nullptr;
+}
+
+/// The devices that read a design key: structure.kind = "a", "b" or "c".
+template <class T>
+std::string DesignOwner(DesignFields<T> fields) {
+  std::string owner = "structure.kind = ";
+  std::size_t i = 0;
+  for (const DesignField<T>& f : fields) {
+    const char* separator = i == 0 ? "" : (i + 1 == fields.size() ? " or " : ", ");
+    owner += separator + std::string("\"") + ToString(f.kind) + "\"";
+    ++i;
+  }
+  return owner;
+}
 
 template <class V>
 void VisitNode(V& v, SceneNode& n) {
@@ -105,12 +141,73 @@ void VisitBody(V& v, SceneBody& b) {
                  "a [materials.NAME] table; its density gives mass and rotary inertia");
 }
 
+// The parametric devices' design keys, each once, with the devices that read it: a key several
+// devices read means the same in each.
+template <class V>
+void VisitDesigns(V& v, SceneStructure& s) {
+  using K = StructureKind;
+  const K kind = s.kind;
+  FoldedFlexureDesign& ff = s.folded_flexure;
+  CrabLegDesign& cl = s.crab_leg;
+  SerpentineDesign& sp = s.serpentine;
+  TorsionalMicromirrorDesign& tm = s.torsional_micromirror;
+  AccelerometerDesign& ac = s.accelerometer;
+  const NumberRule length = Positive(kLength);
+  v.Design("beam_length", kind,
+           {{K::kFoldedFlexure, &ff.beam_length},
+            {K::kTorsionalMicromirror, &tm.beam_length},
+            {K::kAccelerometer, &ac.beam_length}},
+           length, "each suspension beam's length");
+  v.Design("beam_width", kind,
+           {{K::kFoldedFlexure, &ff.beam_width},
+            {K::kSerpentine, &sp.beam_width},
+            {K::kTorsionalMicromirror, &tm.beam_width},
+            {K::kAccelerometer, &ac.beam_width}},
+           length, "each suspension beam's width, in the plane");
+  v.Design("beam_spacing", kind, {{K::kFoldedFlexure, &ff.beam_spacing}}, length,
+           "between an inner and an outer beam's axes");
+  v.Design("truss_width", kind, {{K::kFoldedFlexure, &ff.truss_width}}, length,
+           "the trusses' extent along z");
+  v.Design("shuttle_width", kind,
+           {{K::kFoldedFlexure, &ff.shuttle_width}, {K::kCrabLeg, &cl.shuttle_width}}, length,
+           "the shuttle's extent along x, the direction it moves in");
+  v.Design("shuttle_length", kind,
+           {{K::kFoldedFlexure, &ff.shuttle_length}, {K::kCrabLeg, &cl.shuttle_length}}, length,
+           "the shuttle's extent along z");
+  v.Design("thigh_length", kind, {{K::kCrabLeg, &cl.thigh_length}}, length,
+           "each leg's thigh, along x from its knee to its anchor");
+  v.Design("thigh_width", kind, {{K::kCrabLeg, &cl.thigh_width}}, length,
+           "the thighs' width, in the plane");
+  v.Design("shin_length", kind, {{K::kCrabLeg, &cl.shin_length}}, length,
+           "each leg's shin, along z from the shuttle to its knee");
+  v.Design("shin_width", kind, {{K::kCrabLeg, &cl.shin_width}}, length,
+           "the shins' width, in the plane");
+  v.Design("span_length", kind, {{K::kSerpentine, &sp.span_length}}, length,
+           "each spring's long segments, along z");
+  v.Design("connector_length", kind, {{K::kSerpentine, &sp.connector_length}}, length,
+           "each spring's short segments, along x: the spans' pitch");
+  v.Design("turns", kind, {{K::kSerpentine, &sp.turns}}, IntegerRange{1, kMaxTurns},
+           "the spans of each spring");
+  v.Design("plate_width", kind,
+           {{K::kSerpentine, &sp.plate_width}, {K::kTorsionalMicromirror, &tm.plate_width}}, length,
+           "the plate's extent along x");
+  v.Design("plate_length", kind,
+           {{K::kSerpentine, &sp.plate_length}, {K::kTorsionalMicromirror, &tm.plate_length}},
+           length, "the plate's extent along z");
+  v.Design("mass_width", kind, {{K::kAccelerometer, &ac.mass_width}}, length,
+           "the proof mass's extent along x, the sensitive direction");
+  v.Design("mass_length", kind, {{K::kAccelerometer, &ac.mass_length}}, length,
+           "the proof mass's extent along z");
+}
+
 template <class V>
 void VisitStructure(V& v, SceneStructure& s) {
   v.RequiredChoice("kind", s.kind, kStructureKinds, "structure kind",
                    "a cantilever (clamped at x = 0, free at the tip), a bridge (both ends "
                    "clamped), a frame (a netlist of nodes, beams and rigid bodies), or a "
-                   "parametric device: the folded-flexure resonator");
+                   "parametric device: the folded-flexure or the crab-leg resonator, the "
+                   "serpentine-suspended plate, the torsional micromirror or the proof-mass "
+                   "accelerometer");
   v.Required("thickness", s.thickness, Positive(kLength),
              "along y, normal to the substrate (a frame's default for its members)");
   v.Number("gap", s.gap, Positive(kLength), "no substrate", "from the lower face to the substrate");
@@ -128,17 +225,7 @@ void VisitStructure(V& v, SceneStructure& s) {
   v.Entries(
       "bodies", s.bodies, [](auto& e, SceneBody& b) { VisitBody(e, b); },
       "[[structure.bodies]]: rigid blocks (plates, shuttles, proof masses, mirrors)");
-  FoldedFlexureDesign& f = s.folded_flexure;
-  v.Scope("structure.kind = \"folded_flexure\"", s.kind == StructureKind::kFoldedFlexure,
-          Unchosen::kRefused);
-  v.Number("beam_length", f.beam_length, Positive(kLength), "each of the eight beams, along z");
-  v.Number("beam_width", f.beam_width, Positive(kLength), "in the plane, across the beams");
-  v.Number("beam_spacing", f.beam_spacing, Positive(kLength),
-           "between an inner and an outer beam's axes");
-  v.Number("truss_width", f.truss_width, Positive(kLength), "the trusses' extent along z");
-  v.Number("shuttle_width", f.shuttle_width, Positive(kLength),
-           "along x, the direction it moves in; above 2 (2 beam_width + beam_spacing)");
-  v.Number("shuttle_length", f.shuttle_length, Positive(kLength), "along z");
+  VisitDesigns(v, s);
 }
 
 template <class V>
@@ -152,8 +239,8 @@ void VisitMaterial(V& v, SceneMaterial& m) {
 template <class V>
 void VisitModel(V& v, SceneModel& m) {
   v.Choice("theory", m.theory, kTheories, "theory",
-           "small deflections; mid-plane stretching (bridges); large deflections (the Cosserat "
-           "rod, 3-D only)");
+           "small deflections; mid-plane stretching (a bridge, or every member of a device); "
+           "large deflections (the Cosserat rod, one beam, 3-D only)");
   v.Integer("dimension", m.dimension, IntegerRange{2, 3},
             "3: the full frame; 2: planar (u_x, u_y, theta_z)");
   v.Integer("elements", m.elements, IntegerRange{1, kMaxElements}, "equal elements along the beam");
@@ -252,7 +339,8 @@ void VisitSqueezeFilm(V& v, SqueezeFilmEffect& s) {
 }
 
 template <class V>
-void VisitAnalysis(V& v, SceneAnalysis& a, AnalysisType type, Integrator integrator) {
+void VisitAnalysis(V& v, SceneAnalysis& a, AnalysisType type, Integrator integrator,
+                   StructureKind kind) {
   v.RequiredChoice("type", a.type, kAnalysisTypes, "analysis type", "what to compute");
   v.Scope("analysis.type = \"modal\"", type == AnalysisType::kModal, Unchosen::kSkipped);
   v.Integer("count", a.count, IntegerRange{1, kMaxModes}, "the modes, lowest first");
@@ -265,6 +353,11 @@ void VisitAnalysis(V& v, SceneAnalysis& a, AnalysisType type, Integrator integra
            "model.modes modes propagated exactly");
   v.Choice("initial", a.initial, kInitialStates, "initial state",
            "undeformed at rest, or deflected under the loads, which are removed at t = 0");
+  v.Scope("a device's transient", transient && IsDevice(kind),
+          transient ? Unchosen::kRefused : Unchosen::kSkipped);
+  v.OptionalNames("record", a.record, "the bodies",
+                  "nodes and bodies whose displacement history.csv holds, then every other "
+                  "body's centre; the first point's largest static component is watched");
   // Another integrator's parameter is refused in a transient, carried by the other types.
   const Unchosen other = transient ? Unchosen::kRefused : Unchosen::kSkipped;
   v.Scope("the \"newmark\" integrator", transient && integrator == Integrator::kNewmark, other);

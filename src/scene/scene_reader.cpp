@@ -138,7 +138,7 @@ SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structu
   return e;
 }
 
-SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
+SceneAnalysis ReadAnalysis(const TomlFieldReader& r, StructureKind kind) {
   r.RequireTable("analysis");
   // The type and the integrator first: they decide which parameters are read and which refused.
   const AnalysisType type = r.RequiredChoice("analysis.type", kAnalysisTypes, "analysis type");
@@ -151,7 +151,7 @@ SceneAnalysis ReadAnalysis(const TomlFieldReader& r) {
   // The parameters of every analysis are known keys, so that a scene can carry them while it
   // runs another type (switching with --set analysis.type=...); only the chosen type reads its
   // own.
-  ReadTable(r, "analysis", [&](auto& v) { VisitAnalysis(v, a, type, integrator); });
+  ReadTable(r, "analysis", [&](auto& v) { VisitAnalysis(v, a, type, integrator, kind); });
   if (type == AnalysisType::kTransient) {
     r.Require(a.time_step <= a.duration, "analysis.time_step",
               "must not exceed analysis.duration = " + FormatNumber(a.duration));
@@ -218,11 +218,13 @@ void RequireNewtonIntegrator(const TomlFieldReader& r, const Scene& scene,
                 "\"generalized-alpha\" or \"modal\")");
 }
 
-// Mid-plane stretching needs both ends held axially, and an integrator with a Newton path.
+// Mid-plane stretching of one beam needs both ends held axially (a device's members stretch
+// wherever their ends are held), and an integrator with a Newton path.
 void CheckStretching(const TomlFieldReader& r, const Scene& scene) {
   if (scene.model.theory != Theory::kStretching) return;
-  r.Require(scene.structure.kind == StructureKind::kBridge, "model.theory",
-            "\"stretching\" needs both ends held axially: structure.kind = \"bridge\"");
+  r.Require(scene.structure.kind != StructureKind::kCantilever, "model.theory",
+            "\"stretching\" needs both ends held axially: structure.kind = \"bridge\", or a "
+            "device");
   RequireNewtonIntegrator(r, scene, "model.theory = \"stretching\"");
 }
 
@@ -377,25 +379,29 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A device (a frame, or a parametric device's netlist) runs the linear static, modal and
-// buckling analyses, without surface effects (those act on a cantilever or a bridge); its netlist
-// must be sound and its loads must name its nodes and bodies.
+// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling and
+// transient analyses, linear or with its members' stretching, without surface effects (those act on
+// a cantilever or a bridge); its netlist must be sound, and its loads and recorded points must name
+// its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
       std::string("structure.kind = \"") + ToString(scene.structure.kind) + "\"";
   const AnalysisType type = scene.analysis.type;
   r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-                type == AnalysisType::kBuckling,
-            "analysis.type", kind + " runs the \"static\", \"modal\" and \"buckling\" analyses");
+                type == AnalysisType::kBuckling || type == AnalysisType::kTransient,
+            "analysis.type",
+            kind + " runs the \"static\", \"modal\", \"buckling\" and \"transient\" analyses");
   r.Require(type != AnalysisType::kBuckling || !scene.loads.points.empty() ||
                 !scene.loads.distributed.isZero(0.0),
             "analysis.type",
             "\"buckling\" of " + kind +
                 " finds the factor of its loads that buckles it: give [[loads.points]] or "
                 "loads.distributed");
-  r.Require(scene.model.theory == Theory::kLinear, "model.theory",
-            kind + " takes the \"linear\" theory (the Cosserat rod is a single-member theory)");
+  r.Require(scene.model.theory != Theory::kCosserat, "model.theory",
+            kind +
+                " takes the \"linear\" or \"stretching\" theory (the Cosserat rod is a "
+                "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
   r.Require(!scene.effects.HasSurfaceEffect(), "effects",
             "surface effects act on a cantilever or a bridge, not on " + kind);
@@ -417,11 +423,17 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
       r.Require(structure.FindNode(*p.node) >= 0, entry + ".node", "no node \"" + *p.node + "\"");
     }
     if (p.body) {
-      r.Require(std::any_of(structure.bodies.begin(), structure.bodies.end(),
-                            [&](const StructureBody& b) { return b.name == *p.body; }),
-                entry + ".body", "no body \"" + *p.body + "\"");
+      r.Require(structure.FindBody(*p.body) >= 0, entry + ".body", "no body \"" + *p.body + "\"");
     }
   }
+  if (type != AnalysisType::kTransient) return;
+  const std::vector<std::string>& record = scene.analysis.record;
+  for (std::size_t i = 0; i < record.size(); ++i) {
+    r.Require(structure.FindNode(record[i]) >= 0 || structure.FindBody(record[i]) >= 0,
+              "analysis.record", "no node or body \"" + record[i] + "\"");
+  }
+  r.Require(!record.empty() || !structure.bodies.empty(), "analysis.record",
+            kind + " has no body: name the nodes whose motion the transient records");
 }
 
 }  // namespace
@@ -438,7 +450,7 @@ Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   scene.model = ReadModel(r);
   scene.loads = ReadLoads(r, scene.structure.kind);
   scene.effects = ReadEffects(r, scene.structure);
-  scene.analysis = ReadAnalysis(r);
+  scene.analysis = ReadAnalysis(r, scene.structure.kind);
   scene.device = ReadDevice(r);
   CheckDevice(r, scene);
   CheckLoads(r, scene);

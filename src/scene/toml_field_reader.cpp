@@ -64,23 +64,13 @@ std::string TomlFieldReader::QuotedList(const std::vector<std::string_view>& nam
 
 void TomlFieldReader::RejectUnknownKeys(const std::string& table,
                                         const std::vector<std::string_view>& known,
+                                        const std::vector<std::string_view>& listed,
                                         std::string_view noun) const {
   const toml::table& entries = table.empty() ? root_ : *Find(table)->as_table();
   for (const auto& [key, value] : entries) {
     if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
       Fail(JoinKey(table, key.str()), value,
-           "unknown " + std::string(noun) + " (expected " + PlainList(known) + ")");
-    }
-  }
-}
-
-void TomlFieldReader::RejectUnknownKeys(const std::string& table,
-                                        const std::vector<std::string_view>& known,
-                                        const std::vector<std::string_view>& listed) const {
-  const toml::table& entries = *Find(table)->as_table();
-  for (const auto& [key, value] : entries) {
-    if (std::find(known.begin(), known.end(), key.str()) == known.end()) {
-      Fail(JoinKey(table, key.str()), value, "unknown key (expected " + PlainList(listed) + ")");
+           "unknown " + std::string(noun) + " (expected " + PlainList(listed) + ")");
     }
   }
 }

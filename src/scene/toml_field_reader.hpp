@@ -45,10 +45,13 @@ class TomlFieldReader {
   /// Throws "unknown NOUN (expected ...)" for the first key of `table` ("" is the root) that is
   /// not in `known`.
   void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
-                         std::string_view noun = "key") const;
+                         std::string_view noun = "key") const {
+    RejectUnknownKeys(table, known, known, noun);
+  }
   /// The same, the message listing only `listed` (the keys the scene's choices read).
   void RejectUnknownKeys(const std::string& table, const std::vector<std::string_view>& known,
-                         const std::vector<std::string_view>& listed) const;
+                         const std::vector<std::string_view>& listed,
+                         std::string_view noun = "key") const;
 
   /// The keys of the table at `table`, in the file's order.
   std::vector<std::string> Keys(const std::string& table) const;

@@ -39,14 +39,14 @@ std::string QuoteString(const std::string& text) {
   return out + "\"";
 }
 
+}  // namespace
+
 std::string FormatFloat(double value) {
   std::string text = FormatNumber(value);
   // "20" would read as an integer: keep floats recognisable, as TOML writes them.
   if (text.find_first_not_of("-0123456789") == std::string::npos) text += ".0";
   return text;
 }
-
-}  // namespace
 
 std::string FormatNumber(double value) {
   std::array<char, 32> buffer{};

@@ -16,6 +16,10 @@ std::string FormatToml(const toml::node& node);
 /// shorter: 20, 0.02, 2e-06, 1.69e+11.
 std::string FormatNumber(double value);
 
+/// A TOML float that reads back as exactly `value`: FormatNumber with a '.' where it would
+/// otherwise read as an integer (20.0, not 20).
+std::string FormatFloat(double value);
+
 /// Whether `key` is a TOML bare key: [A-Za-z0-9_-]+.
 bool IsBareKey(std::string_view key);
 

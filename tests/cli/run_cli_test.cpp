@@ -337,7 +337,8 @@ TEST(RunCliTest, ScenesListsEachEmbeddedSceneOnOneLine) {
     ExpectContains(outcome.out, std::string(scene.name));
     ExpectContains(outcome.out, std::string(scene.description) + "\n");
   }
-  EXPECT_EQ(outcome.out.rfind("cantilever ", 0), 0u);
+  EXPECT_EQ(outcome.out.rfind("accelerometer ", 0), 0u);  // in name order
+  ExpectContains(outcome.out, "\ncantilever ");
   ExpectContains(outcome.out, "\nmicrobridge ");
 }
 
@@ -374,7 +375,7 @@ TEST(RunCliTest, SceneErrorsAreOneLineWithExitTwo) {
             "cosmems: --set: model.elements = 0: must be at least 1\n");
   EXPECT_EQ(InvalidInput({"run", "cantilever", "--json", "--set", "model.theory=stretching"}),
             "cosmems: --set: model.theory = \"stretching\": \"stretching\" needs both ends held "
-            "axially: structure.kind = \"bridge\"\n");
+            "axially: structure.kind = \"bridge\", or a device\n");
   ExpectContains(InvalidInput({"run", "cantilever", "--set", "structure.lenght=1e-4"}),
                  "structure.lenght = 1e-04: unknown key");
   ExpectContains(InvalidInput({"run", "cantilever-haptic", "--set", "analysis.rate=750"}),

@@ -254,8 +254,9 @@ INSTANTIATE_TEST_SUITE_P(
     UnknownNames, SceneValidationTest,
     ::testing::Values(
         BadScene{"kind", With("structure.kind", "\"plate\""), "structure.kind = \"plate\"",
-                 "unknown structure kind (expected \"cantilever\", \"bridge\", \"frame\" or "
-                 "\"folded_flexure\")"},
+                 "unknown structure kind (expected \"cantilever\", \"bridge\", \"frame\", "
+                 "\"folded_flexure\", \"crab_leg\", \"serpentine\", "
+                 "\"torsional_micromirror\" or \"accelerometer\")"},
         BadScene{"theory", With("model.theory", "\"foo\""), "model.theory = \"foo\"",
                  "unknown theory (expected \"linear\", \"stretching\" or \"cosserat\")"},
         BadScene{"analysis", With("analysis.type", "\"harmonic\""), "analysis.type = \"harmonic\"",

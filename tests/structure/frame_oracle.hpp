@@ -215,23 +215,44 @@ inline Eigen::VectorXd JacobiScale(const Eigen::MatrixXd& a) {
   return d.cwiseSqrt().cwiseInverse();
 }
 
+/// The frame reduced onto its free motions q (u = z q) and Jacobi-scaled, q = diag(s) y:
+/// K_s = S Z^T K Z S.
+struct Reduced {
+  Model model;
+  Eigen::VectorXd s;
+  Eigen::MatrixXd ks;
+
+  explicit Reduced(const Frame& frame) : model(Assemble(frame)) {
+    const Eigen::MatrixXd kr = model.z.transpose() * model.k * model.z;
+    s = JacobiScale(kr);
+    ks = s.asDiagonal() * kr * s.asDiagonal();
+  }
+  Eigen::MatrixXd ScaledMass() const {
+    return s.asDiagonal() * (model.z.transpose() * model.m * model.z) * s.asDiagonal();
+  }
+  /// S Z^T f of loads in SolveStatic's layout.
+  Eigen::VectorXd ScaledLoads(const Eigen::VectorXd& loads) const {
+    if (loads.size() != model.reported) throw std::invalid_argument("oracle: wrong loads size");
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(model.k.rows());
+    f.head(model.reported) = loads;
+    return s.asDiagonal() * (model.z.transpose() * f);
+  }
+  /// The reported dofs of scaled coordinates y.
+  Eigen::VectorXd Reported(const Eigen::VectorXd& y) const {
+    return (model.z * (s.asDiagonal() * y)).head(model.reported);
+  }
+};
+
 }  // namespace detail
 
 /// Static solution: 6 values per ORIGINAL node (ux uy uz rx ry rz, global axes), then 6 per body
 /// (displacement and rotation of its centre). `loads` has the same layout (forces and moments at
 /// nodes and at body centres). Loads on fixed dofs go into the supports.
 inline Eigen::VectorXd SolveStatic(const Frame& frame, const Eigen::VectorXd& loads) {
-  const detail::Model model = detail::Assemble(frame);
-  if (loads.size() != model.reported) throw std::invalid_argument("oracle: wrong loads size");
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.k.rows());
-  f.head(model.reported) = loads;
-  const Eigen::MatrixXd& z = model.z;
-  const Eigen::MatrixXd kr = z.transpose() * model.k * z;
-  const Eigen::VectorXd s = detail::JacobiScale(kr);
-  const Eigen::LLT<Eigen::MatrixXd> llt(s.asDiagonal() * kr * s.asDiagonal());
+  const detail::Reduced reduced(frame);
+  const Eigen::LLT<Eigen::MatrixXd> llt(reduced.ks);
   if (llt.info() != Eigen::Success) throw std::runtime_error("oracle: frame is a mechanism");
-  const Eigen::VectorXd q = s.asDiagonal() * llt.solve(s.asDiagonal() * (z.transpose() * f));
-  return (z * q).head(model.reported);
+  return reduced.Reported(llt.solve(reduced.ScaledLoads(loads)));
 }
 
 /// Natural frequencies [Hz], ascending, the lowest `count` (fewer if the frame has fewer dofs).
@@ -239,16 +260,11 @@ inline Eigen::VectorXd SolveStatic(const Frame& frame, const Eigen::VectorXd& lo
 /// supported frame while M may be singular (massless dofs, e.g. polar = 0, give mu = 0 and an
 /// infinite frequency), and the lowest modes become the largest, most accurately computed mu.
 inline Eigen::VectorXd Frequencies(const Frame& frame, int count) {
-  const detail::Model model = detail::Assemble(frame);
-  const Eigen::MatrixXd& z = model.z;
-  const Eigen::MatrixXd kr = z.transpose() * model.k * z;
-  const Eigen::VectorXd s = detail::JacobiScale(kr);
-  const Eigen::MatrixXd ks = s.asDiagonal() * kr * s.asDiagonal();
-  if (Eigen::LLT<Eigen::MatrixXd>(ks).info() != Eigen::Success)
+  const detail::Reduced reduced(frame);
+  if (Eigen::LLT<Eigen::MatrixXd>(reduced.ks).info() != Eigen::Success)
     throw std::runtime_error("oracle: frame is a mechanism");
-  const Eigen::MatrixXd ms = s.asDiagonal() * (z.transpose() * model.m * z) * s.asDiagonal();
   const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      ms, ks, Eigen::EigenvaluesOnly | Eigen::Ax_lBx);
+      reduced.ScaledMass(), reduced.ks, Eigen::EigenvaluesOnly | Eigen::Ax_lBx);
   const Eigen::VectorXd& mu = solver.eigenvalues();  // ascending
   const int n = static_cast<int>(mu.size());
   constexpr double kPi = 3.14159265358979323846;
@@ -259,6 +275,34 @@ inline Eigen::VectorXd Frequencies(const Frame& frame, int count) {
     hz[i] = m > tiny ? 1 / (2 * kPi * std::sqrt(m)) : std::numeric_limits<double>::infinity();
   }
   return hz;
+}
+
+/// The undamped response (reported dofs, one row per time) to `loads` (SolveStatic's layout)
+/// applied as a step at t = 0 to the frame at rest, by superposing all its modes: in the scaled
+/// coordinates y (K_s y + M_s y'' = g), with M_s x_i = mu_i K_s x_i and x_i^T K_s x_i = 1, each
+/// a_i(t) = (x_i^T g)(1 - cos(t / sqrt(mu_i))), whose sum at rest is y = K_s^-1 g. With
+/// `dynamic` > 0 only the lowest `dynamic` modes oscillate and the others follow statically
+/// (a_i = x_i^T g), the static correction of a truncated modal model.
+inline Eigen::MatrixXd StepResponse(const Frame& frame, const Eigen::VectorXd& loads,
+                                    const std::vector<double>& times, int dynamic = 0) {
+  const detail::Reduced reduced(frame);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+      reduced.ScaledMass(), reduced.ks, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+  const Eigen::VectorXd& mu = solver.eigenvalues();  // ascending: the lowest modes last
+  const Eigen::MatrixXd& x = solver.eigenvectors();
+  const Eigen::VectorXd share = x.transpose() * reduced.ScaledLoads(loads);
+  const int n = static_cast<int>(mu.size());
+  const double tiny = n * std::numeric_limits<double>::epsilon() * std::abs(mu[n - 1]);
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(times.size()), reduced.model.reported);
+  for (std::size_t t = 0; t < times.size(); ++t) {
+    Eigen::VectorXd a = share;
+    for (int i = 0; i < n; ++i) {
+      const bool oscillates = mu[i] > tiny && (dynamic <= 0 || i >= n - dynamic);
+      if (oscillates) a[i] *= 1 - std::cos(times[t] / std::sqrt(mu[i]));
+    }
+    out.row(static_cast<Eigen::Index>(t)) = reduced.Reported(x * a);
+  }
+  return out;
 }
 
 }  // namespace cosmems::test::oracle

@@ -25,7 +25,8 @@ struct BeamStepperSetup {
   std::unique_ptr<BeamStepper> stepper;
 };
 
-/// The BeamStepper of `options.path` for `model` under the load patterns `patterns` (n x m), with
+/// The BeamStepper of `options.path` for `model` (a BeamModel or a FrameModel: their reduced
+/// matrices, and SolveModal of either) under the load patterns `patterns` (n x m), with
 /// the nonlinear `force` (nullptr: none; it must outlive the stepper):
 /// - the Newmark family: LinearNewmarkIntegrator without a force (factored once),
 ///   NonlinearNewmarkIntegrator (Newton) with one; a damping model becomes Rayleigh damping
@@ -33,8 +34,8 @@ struct BeamStepperSetup {
 /// - modal: the `modes` lowest modes (MakeModalModel, their damping as ratios), propagated
 ///   exactly (ModalStepper) or with the force held over each step (NonlinearModalStepper).
 /// Allocates; throws std::invalid_argument on unusable options.
-template <int Dim>
-BeamStepperSetup MakeBeamStepper(const BeamModel<Dim>& model, const StepperOptions& options,
+template <class Model>
+BeamStepperSetup MakeBeamStepper(const Model& model, const StepperOptions& options,
                                  const Eigen::MatrixXd& patterns, NonlinearForce* force) {
   const double dt = options.time_step / model.units().time;
   BeamStepperSetup out;

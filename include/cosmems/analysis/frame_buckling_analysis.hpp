@@ -31,9 +31,9 @@ struct FrameBucklingResult {
 inline FrameBucklingResult SolveFrameBuckling(const FrameModel& model, const FrameLoadCase& loads,
                                               const BucklingOptions& options = {}) {
   FrameBucklingResult out;
-  const FrameStaticSolution statics = SolveFrameStatic(model, loads);
-  out.status = statics.status;
-  if (statics.status != Status::kOk) return out;
+  Eigen::VectorXd d;
+  out.status = SolveFrameDisplacement(model, AssembleFrameLoads(model, loads), d);
+  if (out.status != Status::kOk) return out;
   const SymmetricBandMatrix& k = model.Stiffness();
   SymmetricBandMatrix compression(k.size(), k.bandwidth());  // -K_G
   out.axial_force_n.resize(model.ElementCount());
@@ -45,7 +45,7 @@ inline FrameBucklingResult SolveFrameBuckling(const FrameModel& model, const Fra
   }
   for (int e = 0; e < model.ElementCount(); ++e) {
     const FrameModel::ElementVector end =
-        internal::ElementEndForces(model, statics.displacement, e, loads.distributed);
+        internal::ElementEndForces(model, d, e, loads.distributed);
     // The mean of the two ends' tension: exact for point loads, the element's average under a
     // distributed axial load.
     const double n = 0.5 * (end[6] - end[0]);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <stdexcept>
 #include <vector>
 
 #include "cosmems/analysis/modal_analysis.hpp"
@@ -102,12 +103,26 @@ inline ModeKind ClassifyFrameMode(const FrameModel& model, const Eigen::VectorXd
   return static_cast<ModeKind>(std::max_element(energy.begin(), energy.end()) - energy.begin());
 }
 
-/// The lowest modes of a frame (the power-series polynomial eigenproblem across its members,
-/// SolvePencilModes), their kinds and participations.
-inline FrameModalResult SolveFrameModal(const FrameModel& model, const ModalOptions& options = {}) {
-  ModalPencil pencil{model.Stiffness(), 0.0, Eigen::VectorXd::Zero(model.FreeDofCount()), {}};
+/// The lowest modes of a frame with the stiffness `stiffness` (K, or the tangent about a
+/// deflected state; the model's pattern): the power-series polynomial eigenproblem across its
+/// members (SolvePencilModes), and their kinds.
+inline ModalResult SolveModal(const FrameModel& model, const SymmetricBandMatrix& stiffness,
+                              const ModalOptions& options) {
+  ModalPencil pencil{stiffness, 0.0, Eigen::VectorXd::Zero(model.FreeDofCount()), {}};
   for (int j = 0; j <= model.SeriesOrder(); ++j) pencil.mass.push_back(model.Mass(j));
-  FrameModalResult out{SolvePencilModes(pencil, model.units().time, options), {}};
+  ModalResult out = SolvePencilModes(pencil, model.units().time, options);
+  for (Mode& mode : out.modes) mode.kind = ClassifyFrameMode(model, mode.shape);
+  return out;
+}
+
+/// The lowest modes of the unloaded frame: the beam's SolveModal, for the code written for both.
+inline ModalResult SolveModal(const FrameModel& model, const ModalOptions& options = {}) {
+  return SolveModal(model, model.Stiffness(), options);
+}
+
+/// The participations of a frame's `modes` (FrameModalResult).
+inline FrameModalResult WithParticipations(const FrameModel& model, ModalResult modes) {
+  FrameModalResult out{std::move(modes), {}};
   const FrameRigidMotions rigid(model);
   Eigen::MatrixXd mr(model.FreeDofCount(), 6);
   for (int k = 0; k < 6; ++k) {
@@ -115,8 +130,7 @@ inline FrameModalResult SolveFrameModal(const FrameModel& model, const ModalOpti
     model.Mass(0).Multiply(rigid.reduced.col(k), column);
     mr.col(k) = column;
   }
-  for (Mode& mode : out.modal.modes) {
-    mode.kind = ClassifyFrameMode(model, mode.shape);
+  for (const Mode& mode : out.modal.modes) {
     std::array<double, 6> share{};
     for (int k = 0; k < 6; ++k) {
       const double gamma = mode.shape.dot(mr.col(k));
@@ -125,6 +139,33 @@ inline FrameModalResult SolveFrameModal(const FrameModel& model, const ModalOpti
     out.participation.push_back(share);
   }
   return out;
+}
+
+/// The lowest modes of the unloaded frame, with their participations.
+inline FrameModalResult SolveFrameModal(const FrameModel& model, const ModalOptions& options = {}) {
+  return WithParticipations(model, SolveModal(model, options));
+}
+
+/// The modes of a frame about its equilibrium `d` under the nonlinear `force` (K plus the
+/// force's tangent there, which must fit the band: the members' stretching), with their
+/// participations: a stretched device's stiffened modes. A tangent that is not positive
+/// definite (past a fold) is Status::kNotPositiveDefinite.
+inline FrameModalResult SolveFrameModalAbout(const FrameModel& model, NonlinearForce& force,
+                                             const Eigen::VectorXd& d,
+                                             const ModalOptions& options = {}) {
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(model.FreeDofCount());
+  tangent.Clear();
+  FrameModalResult out;
+  if (!force.Evaluate(d, r, tangent)) {
+    out.modal.status = Status::kNonFinite;
+    return out;
+  }
+  if (tangent.rank_one_scale() != 0.0) {
+    throw std::invalid_argument("SolveFrameModalAbout: the force's tangent must fit the band");
+  }
+  tangent.band().mutable_data() += model.Stiffness().data();
+  return WithParticipations(model, SolveModal(model, tangent.band(), options));
 }
 
 }  // namespace cosmems

@@ -7,11 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/beam/element_loads.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/structure/frame_model.hpp"
+#include "cosmems/structure/frame_stretching_force.hpp"
 
 namespace cosmems {
 
@@ -92,12 +94,15 @@ inline Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLo
 
 namespace internal {
 
-// Each element's end forces in its own axes, K u - f_q (internal units): the reactions, the
-// axial forces and the stresses all come from them.
-inline FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen::VectorXd& d,
-                                                  int e, const Eigen::Vector3d& distributed) {
+// Each element's end forces in its own axes, K u + r(u) - f_q (internal units; r the
+// stretching's, when given): the reactions, the axial forces and the stresses all come from
+// them.
+inline FrameModel::ElementVector ElementEndForces(
+    const FrameModel& model, const Eigen::VectorXd& d, int e, const Eigen::Vector3d& distributed,
+    const FrameStretchingForce* stretching = nullptr) {
   const FrameModel::ElementVector u = model.LocalDisplacement(d, e);
   FrameModel::ElementVector s = model.LocalStiffness(e) * u;
+  if (stretching != nullptr) s += stretching->LocalForce(d, e);
   if (!distributed.isZero(0.0)) {
     const Eigen::Vector3d q =
         model.mesh().elements[e].axes * distributed / model.units().ForcePerLength();
@@ -108,24 +113,29 @@ inline FrameModel::ElementVector ElementEndForces(const FrameModel& model, const
 
 }  // namespace internal
 
-/// Linear statics of a frame, K u = f, with the nodes' and bodies' motions, the reactions at
-/// the anchors and the members' largest stress and axial force. A structure left free to move
-/// (a mechanism) has a singular K: Status::kNotPositiveDefinite, never a NaN.
-/// `solver_kind`: the factorisation (SpdSolver::Choose by default).
-inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
-                                            SpdSolverKind solver_kind = SpdSolverKind::kAuto) {
-  FrameStaticSolution out;
-  const UnitSystem& units = model.units();
-  const Eigen::VectorXd f = AssembleFrameLoads(model, loads);
+/// The reduced displacement d (internal units) of K d = f, the linear statics alone. A structure
+/// left free to move (a mechanism) has a singular K: Status::kNotPositiveDefinite and d zero,
+/// never a NaN. `solver_kind`: the factorisation (SpdSolver::Choose by default).
+inline Status SolveFrameDisplacement(const FrameModel& model, const Eigen::VectorXd& f,
+                                     Eigen::VectorXd& d,
+                                     SpdSolverKind solver_kind = SpdSolverKind::kAuto) {
   SpdSolver solver;
-  out.status = solver.Compute(model.Stiffness(), solver_kind);
-  out.displacement = f;
-  if (out.status == Status::kOk) solver.SolveInPlace(out.displacement);
-  if (out.status == Status::kOk && !out.displacement.allFinite()) out.status = Status::kNonFinite;
-  if (out.status != Status::kOk) {
-    out.displacement.setZero();
-    return out;
-  }
+  Status status = solver.Compute(model.Stiffness(), solver_kind);
+  d = f;
+  if (status == Status::kOk) solver.SolveInPlace(d);
+  if (status == Status::kOk && !d.allFinite()) status = Status::kNonFinite;
+  if (status != Status::kOk) d.setZero();
+  return status;
+}
+
+namespace internal {
+
+// The motions of every node and body, the largest deflection toward the substrate, the members'
+// largest stress and axial force and the reactions of the solved displacement out.displacement
+// (with the stretching's end forces, when given).
+inline void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
+                               const FrameStretchingForce* stretching, FrameStaticSolution& out) {
+  const UnitSystem& units = model.units();
   const Eigen::VectorXd& d = out.displacement;
   auto si = [&](FrameModel::Motion m) {
     m.head<3>() *= units.length;
@@ -155,7 +165,7 @@ inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const Frame
   std::vector<FrameModel::Motion> resisted(s.nodes.size(), FrameModel::Motion::Zero());
   for (int e = 0; e < model.ElementCount(); ++e) {
     const FrameModel::ElementVector end =
-        internal::ElementEndForces(model, d, e, loads.distributed);
+        ElementEndForces(model, d, e, loads.distributed, stretching);
     const ElementProperties& p = model.elements()[e].properties();
     for (int k = 0; k < 2; ++k) {
       const double axial = (k == 0 ? -end[0] : end[6]) * units.force;
@@ -189,6 +199,37 @@ inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const Frame
                            resisted[n].tail<3>() * units.Moment()};
     out.reactions.push_back(reaction);
   }
+}
+
+}  // namespace internal
+
+/// Linear statics of a frame, K u = f, with the nodes' and bodies' motions, the reactions at
+/// the anchors and the members' largest stress and axial force (SolveFrameDisplacement's
+/// statuses).
+inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
+                                            SpdSolverKind solver_kind = SpdSolverKind::kAuto) {
+  FrameStaticSolution out;
+  out.status = SolveFrameDisplacement(model, AssembleFrameLoads(model, loads), out.displacement,
+                                      solver_kind);
+  if (out.status == Status::kOk) internal::RecoverFrameStatic(model, loads, nullptr, out);
+  return out;
+}
+
+/// Statics of a frame whose members stretch as they bend, K u + r(u) = f (NonlinearStaticSolve:
+/// adaptive load steps, Newton with the consistent tangent), with the same results as
+/// SolveFrameStatic; the end forces, reactions and axial forces carry the members' tension. A
+/// load the solve cannot carry whole is Status::kNotConverged, with no results but the status.
+inline FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
+                                                     FrameStretchingForce& stretching,
+                                                     const FrameLoadCase& loads,
+                                                     const NonlinearStaticOptions& options = {}) {
+  FrameStaticSolution out;
+  NonlinearStaticSolve solve(model.Stiffness(), stretching, options, nullptr);
+  const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
+  out.status = solution.status;
+  if (out.status != Status::kOk) return out;
+  out.displacement = solution.displacement;
+  internal::RecoverFrameStatic(model, loads, &stretching, out);
   return out;
 }
 

@@ -11,12 +11,12 @@
 
 namespace cosmems {
 
-/// Builds the modal model from `modes` of `model`. For series order >= 1 the modes solve the
-/// polynomial problem P(l) x = 0, whose modal mass is x^T P'(l) x with
+/// Builds the modal model from `modes` of `model` (a BeamModel or a FrameModel). For series order
+/// >= 1 the modes solve the polynomial problem P(l) x = 0, whose modal mass is x^T P'(l) x with
 /// -P'(l) = M_0 + 2 l M_2 + 3 l^2 M_4 + ...; shapes are scaled to unit modal mass in that
 /// sense (for order 0 it is the usual x^T M_0 x = 1).
-template <int Dim>
-ModalModel MakeModalModel(const BeamModel<Dim>& model, const ModalResult& modes,
+template <class Model>
+ModalModel MakeModalModel(const Model& model, const ModalResult& modes,
                           const DampingModel& damping) {
   ModalModel out;
   const int n = model.FreeDofCount();

@@ -49,17 +49,13 @@ struct NonlinearStaticSolution {
 /// factored afresh at every iteration, and a backtracking line search on the residual norm, so a
 /// correction that overshoots a stiffening force is shortened instead of thrown away. Converged
 /// on NewtonOptions' relative residual or increment.
-template <int Dim>
+/// `stiffness`: the linear structure's K (a beam's or a frame's), which must outlive the solve.
 class NonlinearStaticSolve : private PlainNewtonScheme {
  public:
-  NonlinearStaticSolve(const BeamModel<Dim>& model, NonlinearForce& force,
+  NonlinearStaticSolve(const SymmetricBandMatrix& stiffness, NonlinearForce& force,
                        const NonlinearStaticOptions& options, NonlinearForce* ramped)
-      : k_(model.Stiffness()),
-        force_(force),
-        ramped_(ramped),
-        options_(options),
-        newton_(options.newton) {
-    const int n = model.FreeDofCount();
+      : k_(stiffness), force_(force), ramped_(ramped), options_(options), newton_(options.newton) {
+    const int n = stiffness.size();
     tangent_ = ForceTangent(n, k_.bandwidth());
     ramped_tangent_ = ForceTangent(n, k_.bandwidth());
     jacobian_ = SymmetricBandMatrix(n, k_.bandwidth());
@@ -180,7 +176,7 @@ NonlinearStaticSolution SolveNonlinearStatic(const BeamModel<Dim>& model, Nonlin
                                              const LoadCase& loads,
                                              const NonlinearStaticOptions& options = {},
                                              NonlinearForce* ramped = nullptr) {
-  NonlinearStaticSolve<Dim> solve(model, force, options, ramped);
+  NonlinearStaticSolve solve(model.Stiffness(), force, options, ramped);
   return solve.Solve(AssembleLoads(model, loads));
 }
 

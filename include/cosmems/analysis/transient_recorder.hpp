@@ -48,7 +48,14 @@ class TransientRecorder {
   /// `sample()` returns uy [m] at the output point.
   template <typename Step, typename Sample>
   void Run(TransientResult& result, Step&& step, Sample&& sample) {
-    Record(result, 0, sample());
+    Run(result, step, sample, [] {});
+  }
+
+  /// The same, calling `keep()` at every sample the history keeps (after its time is kept), for
+  /// a caller that records more than the output point there.
+  template <typename Step, typename Sample, typename Keep>
+  void Run(TransientResult& result, Step&& step, Sample&& sample, Keep&& keep) {
+    if (Record(result, 0, sample())) keep();
     long batch = 1;
     for (long i = 1; i <= steps_;) {
       if (i == kProbe + 1) batch = Batch();
@@ -60,7 +67,7 @@ class TransientRecorder {
         if (status != Status::kOk) break;
         result.steps = i;
         const double uy = sample();
-        Record(result, i, uy);
+        if (Record(result, i, uy)) keep();
         if (std::abs(uy) > divergence_) {
           status = Status::kDiverged;
           break;
@@ -117,7 +124,8 @@ class TransientRecorder {
     return best / kReads;
   }
 
-  void Record(TransientResult& result, long i, double uy) {
+  // Whether the sample is kept in the history.
+  bool Record(TransientResult& result, long i, double uy) {
     result.max_abs_output = std::max(result.max_abs_output, std::abs(uy));
     result.max_toward_substrate = std::max(result.max_toward_substrate, -uy);
     // A countdown, not i % stride: a division per step costs as much as a modal step.
@@ -125,7 +133,9 @@ class TransientRecorder {
       result.time_s.push_back(static_cast<double>(i) * time_step_);
       result.output_m.push_back(uy);
       until_kept_ = stride_;
+      return true;
     }
+    return false;
   }
 
   double time_step_;

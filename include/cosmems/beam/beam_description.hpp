@@ -72,12 +72,22 @@ inline BeamDescription UniformBeam(double length, const Material& material,
 
 /// The structures a scene names: "cantilever" (clamped at x = 0), "bridge" (clamped-clamped),
 /// and the devices, netlists of members and bodies (StructureDescription), no one beam: "frame"
-/// (the netlist written out) and the parametric "folded_flexure".
-enum class StructureKind { kCantilever, kBridge, kFrame, kFoldedFlexure };
+/// (the netlist written out) and the parametric devices, whose generators make one:
+/// "folded_flexure", "crab_leg", "serpentine", "torsional_micromirror" and "accelerometer".
+enum class StructureKind {
+  kCantilever,
+  kBridge,
+  kFrame,
+  kFoldedFlexure,
+  kCrabLeg,
+  kSerpentine,
+  kTorsionalMicromirror,
+  kAccelerometer,
+};
 
 /// Whether the structure is a device (a netlist), not one beam.
 constexpr bool IsDevice(StructureKind kind) {
-  return kind == StructureKind::kFrame || kind == StructureKind::kFoldedFlexure;
+  return kind != StructureKind::kCantilever && kind != StructureKind::kBridge;
 }
 
 /// The cantilever or the bridge as a chain of equal elements; a device is refused.

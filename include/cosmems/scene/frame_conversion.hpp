@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/structure/structure_description.hpp"
 
@@ -14,7 +15,16 @@ namespace cosmems {
 /// generator makes of its design parameters. Validated (StructureDescription::Validate).
 StructureDescription MakeStructureDescription(const Scene& scene);
 
+/// The couplings the scene's theory adds to the frame's linear members: a device with
+/// model.theory = "stretching" stretches every member as it bends.
+FrameCouplings MakeFrameCouplings(const Scene& scene);
+
 /// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.
 FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure);
+
+/// The points a device's transient records: the nodes and bodies of analysis.record (a name that
+/// is a node and a body is the node), then every other body's centre. The first is watched.
+std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,
+                                              const StructureDescription& structure);
 
 }  // namespace cosmems

@@ -8,8 +8,12 @@
 
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/scene/scene_effects.hpp"
+#include "cosmems/structure/accelerometer.hpp"
+#include "cosmems/structure/crab_leg.hpp"
 #include "cosmems/structure/folded_flexure.hpp"
+#include "cosmems/structure/serpentine.hpp"
 #include "cosmems/structure/structure_description.hpp"
+#include "cosmems/structure/torsional_micromirror.hpp"
 
 namespace cosmems {
 
@@ -48,7 +52,8 @@ enum class TimeFunctionKind {
   kSine,  ///< "sine": times sin(2 pi frequency t)
 };
 
-/// The scene-file spelling: "cantilever" | "bridge" | "frame" | "folded_flexure".
+/// The scene-file spelling: "cantilever" | "bridge" | "frame" | "folded_flexure" | "crab_leg" |
+/// "serpentine" | "torsional_micromirror" | "accelerometer".
 constexpr const char* ToString(StructureKind kind) {
   switch (kind) {
     case StructureKind::kCantilever:
@@ -59,6 +64,14 @@ constexpr const char* ToString(StructureKind kind) {
       return "frame";
     case StructureKind::kFoldedFlexure:
       return "folded_flexure";
+    case StructureKind::kCrabLeg:
+      return "crab_leg";
+    case StructureKind::kSerpentine:
+      return "serpentine";
+    case StructureKind::kTorsionalMicromirror:
+      return "torsional_micromirror";
+    case StructureKind::kAccelerometer:
+      return "accelerometer";
   }
   return "unknown";
 }
@@ -189,9 +202,14 @@ struct SceneStructure {
   std::vector<SceneNode> nodes;   ///< frames
   std::vector<SceneBeam> beams;   ///< frames
   std::vector<SceneBody> bodies;  ///< frames
-  /// kind = "folded_flexure": its geometry (the thickness, material, elements per beam and
-  /// series order come from structure.thickness, [material] and [model]).
+  /// The parametric devices' geometries, each read when `kind` names it (the thickness,
+  /// material, elements per member and series order come from structure.thickness, [material]
+  /// and [model]).
   FoldedFlexureDesign folded_flexure;
+  CrabLegDesign crab_leg;
+  SerpentineDesign serpentine;
+  TorsionalMicromirrorDesign torsional_micromirror;
+  AccelerometerDesign accelerometer;
 };
 
 /// [material]: an isotropic linear-elastic material.
@@ -253,6 +271,8 @@ struct SceneAnalysis {
   double alpha = 0.05;   ///< hht, in [0, 1/3]
   double rho_inf = 0.8;  ///< generalized-alpha: spectral radius at infinite frequency, in [0, 1]
   InitialState initial = InitialState::kRest;
+  /// a device: the nodes and bodies whose motion history.csv holds besides every body's centre
+  std::vector<std::string> record;
 
   // pullin
   std::optional<double> voltage_max;  ///< V: search no further than this voltage

@@ -15,15 +15,15 @@ namespace cosmems {
 /// outer beam from the truss back to the shuttle, the trusses joining the pairs of each end.
 /// The beams run along z, the shuttle moves along x.
 struct FoldedFlexureDesign {
-  double beam_length = 100e-6;    ///< m, each of the eight beams
-  double beam_width = 2e-6;       ///< m, in the plane (the compliant direction's)
-  double beam_spacing = 4e-6;     ///< m between an inner and an outer beam's axes
-  double truss_width = 4e-6;      ///< m, the truss's extent along the beams
-  double shuttle_width = 40e-6;   ///< m, along x
-  double shuttle_length = 40e-6;  ///< m, along z
-  double thickness = 2e-6;        ///< m, of the beams, trusses and shuttle
-  Material material;
-  int elements = 10;  ///< per beam
+  double beam_length = 100e-6;             ///< m, each of the eight beams
+  double beam_width = 2e-6;                ///< m, in the plane (the compliant direction's)
+  double beam_spacing = 4e-6;              ///< m between an inner and an outer beam's axes
+  double truss_width = 4e-6;               ///< m, the truss's extent along the beams
+  double shuttle_width = 40e-6;            ///< m, along x
+  double shuttle_length = 40e-6;           ///< m, along z
+  double thickness = 2e-6;                 ///< m, of the beams, trusses and shuttle
+  Material material{160e9, 2330.0, 0.22};  ///< polysilicon
+  int elements = 10;                       ///< per beam
   int series_order = 1;
 
   /// The stiffness along x with rigid trusses and shuttle, 24 E I / L^3 (I = t w^3 / 12): each
@@ -40,15 +40,12 @@ struct FoldedFlexureDesign {
 /// origin. Throws FieldError naming
 /// the structure key of a parameter out of its range.
 inline StructureDescription FoldedFlexure(const FoldedFlexureDesign& d) {
-  auto positive = [](const char* key, double value) {
-    if (!(value > 0.0)) throw FieldError(std::string("structure.") + key, "must be positive");
-  };
-  positive("beam_length", d.beam_length);
-  positive("beam_width", d.beam_width);
-  positive("beam_spacing", d.beam_spacing);
-  positive("truss_width", d.truss_width);
-  positive("shuttle_length", d.shuttle_length);
-  positive("thickness", d.thickness);
+  RequirePositiveDesign({{"beam_length", d.beam_length},
+                         {"beam_width", d.beam_width},
+                         {"beam_spacing", d.beam_spacing},
+                         {"truss_width", d.truss_width},
+                         {"shuttle_length", d.shuttle_length},
+                         {"thickness", d.thickness}});
   // The outer beams meet the shuttle a beam width inside its corners, the inner beams lie a
   // spacing further in: both pairs of a side must fit on the shuttle's half width.
   const double joint_x = 0.5 * d.shuttle_width - d.beam_width;

@@ -20,8 +20,17 @@ namespace cosmems {
 /// A node attached to a body is eliminated: its motion is the body's, u = u_c + theta_c x r, so
 /// a body adds six degrees of freedom and no stiff springs. Anchored degrees of freedom are
 /// removed. The carriers of motion (free nodes and bodies) are numbered in reverse
-/// Cuthill-McKee order, six degrees of freedom each, so K and the mass terms M_2j keep a narrow
-/// band (SymmetricBandMatrix) whatever the netlist's order.
+/// Cuthill-McKee order, so K and the mass terms M_2j keep a narrow band (SymmetricBandMatrix)
+/// whatever the netlist's order. The six directions of motion fall into groups that no member
+/// or body couples (a planar device's in-plane ux, uz, ry and out-of-plane uy, rx, rz; a chain
+/// along x's four fields), and each group is numbered on its own, carrier by carrier: the band
+/// is that of the widest group, as a beam's field-by-field numbering makes it (a netlist that
+/// is a straight chain has the chain's band).
+/// The couplings between a member's fields that the forces on a frame may add to its linear
+/// elements': none, or those of axial stretching, which ties each member's axial field to its
+/// two bendings (FrameStretchingForce). The numbering keeps apart only what never couples.
+enum class FrameCouplings { kLinear, kStretching };
+
 class FrameModel {
  public:
   using Element = FrameElement<3>;
@@ -29,8 +38,10 @@ class FrameModel {
   using Motion = Eigen::Matrix<double, 6, 1>;
   using ElementVector = Eigen::Matrix<double, 12, 1>;
 
-  explicit FrameModel(const StructureDescription& description)
-      : description_((description.Validate(), description)),
+  explicit FrameModel(const StructureDescription& description,
+                      FrameCouplings couplings = FrameCouplings::kLinear)
+      : couplings_(couplings),
+        description_((description.Validate(), description)),
         units_(InternalUnits(description)),
         bases_(description.series_order),
         mesh_(description) {
@@ -44,6 +55,7 @@ class FrameModel {
   }
 
   const StructureDescription& description() const { return description_; }
+  FrameCouplings couplings() const { return couplings_; }
   const UnitSystem& units() const { return units_; }
   const FrameBases& bases() const { return bases_; }
   const FrameMesh& mesh() const { return mesh_; }
@@ -120,14 +132,16 @@ class FrameModel {
   }
 
   /// Adds T^T A T, an element's matrix A in its own axes carried onto its carriers, to `global`
-  /// (a matrix of this model's pattern). Two entries of one carrier (an element whose ends share
-  /// a body) land on the same global entry and are both added.
+  /// (a matrix of this model's pattern; A couples the local fields no more than K does). Two
+  /// entries of one carrier (an element whose ends share a body) land on the same global entry
+  /// and are both added; entries between uncoupled groups are zero up to the rotation's
+  /// round-off, and left out.
   void AddElementMatrix(int e, const Element::Matrix& local, SymmetricBandMatrix& global) const {
     const Transform a = transform_[e].transpose() * local * transform_[e];
     const std::array<int, 12>& dofs = element_dofs_[e];
     for (int i = 0; i < 12; ++i) {
       for (int j = 0; j < 12; ++j) {
-        if (dofs[i] >= 0 && dofs[j] >= 0 && dofs[i] >= dofs[j])
+        if (dofs[i] >= 0 && dofs[j] >= 0 && dofs[i] >= dofs[j] && Coupled(i, j))
           global.Add(dofs[i], dofs[j], a(i, j));
       }
     }
@@ -152,7 +166,48 @@ class FrameModel {
                                first.material.density * first.section.Area());
   }
 
-  // Carriers in reverse Cuthill-McKee order over the elements' connections, six dofs each.
+  // Whether directions i % 6 and j % 6 of carriers may couple (one group).
+  bool Coupled(int i, int j) const { return group_[i % 6] == group_[j % 6]; }
+
+  // Whether an element's local dofs a and b may couple: one field, or, with stretching, the
+  // axial field and the bendings.
+  bool LocalCoupled(int a, int b) const {
+    const DofField fa = FieldOf(static_cast<NodalDof>(a % 6));
+    const DofField fb = FieldOf(static_cast<NodalDof>(b % 6));
+    return fa == fb || (couplings_ == FrameCouplings::kStretching && fa != DofField::kTorsion &&
+                        fb != DofField::kTorsion);
+  }
+
+  // The groups of the six directions that some element couples: its coupled local fields
+  // (LocalCoupled) carried through its transform, entries below 1e-12 of the transform's taken
+  // as the rotation's round-off. A body's inertia about its centre couples none (its offsets
+  // couple through the elements' transforms).
+  void Group() {
+    Transform coupled;
+    for (int a = 0; a < 12; ++a) {
+      for (int b = 0; b < 12; ++b) coupled(a, b) = LocalCoupled(a, b);
+    }
+    for (int d = 0; d < 6; ++d) group_[d] = d;
+    auto root = [&](int d) {
+      while (group_[d] != d) d = group_[d];
+      return d;
+    };
+    for (const Transform& t : transform_) {
+      const Transform magnitude = t.cwiseAbs();
+      const Transform present =
+          (magnitude.array() > 1e-12 * magnitude.maxCoeff()).cast<double>().matrix();
+      const Transform couples = present.transpose() * coupled * present;
+      for (int i = 0; i < 12; ++i) {
+        for (int j = 0; j < 12; ++j) {
+          if (couples(i, j) != 0.0) group_[root(i % 6)] = root(j % 6);
+        }
+      }
+    }
+    for (int d = 0; d < 6; ++d) group_[d] = root(d);
+  }
+
+  // Carriers in reverse Cuthill-McKee order over the elements' connections, each group of
+  // directions on its own (Group).
   void Number() {
     const int carriers = static_cast<int>(mesh_.carriers.size());
     std::vector<std::vector<int>> adjacency(carriers);
@@ -167,44 +222,49 @@ class FrameModel {
       std::sort(list.begin(), list.end());
       list.erase(std::unique(list.begin(), list.end()), list.end());
     }
-    dof_.assign(6 * carriers, -1);
-    for (int c : ReverseCuthillMcKee(adjacency)) {
-      for (int d = 0; d < 6; ++d) {
-        if (!mesh_.carriers[c].anchor[d]) dof_[6 * c + d] = free_++;
-      }
-    }
-    for (int e = 0; e < ElementCount(); ++e) {
-      const FrameMesh::Element& element = mesh_.elements[e];
-      std::array<int, 12> dofs;
+    for (const FrameMesh::Element& element : mesh_.elements) {
       Transform t = Transform::Zero();
       const int ends[2] = {element.from, element.to};
       for (int end = 0; end < 2; ++end) {
-        for (int d = 0; d < 6; ++d)
-          dofs[6 * end + d] = CarrierDof(mesh_.nodes[ends[end]].carrier, d);
         const Eigen::Matrix<double, 6, 6> node = NodeTransform(ends[end]);
         t.block<3, 6>(6 * end, 6 * end) = element.axes * node.topRows<3>();
         t.block<3, 6>(6 * end + 3, 6 * end) = element.axes * node.bottomRows<3>();
       }
-      element_dofs_.push_back(dofs);
       transform_.push_back(t);
+    }
+    Group();
+    dof_.assign(6 * carriers, -1);
+    const std::vector<int> order = ReverseCuthillMcKee(adjacency);
+    for (int g = 0; g < 6; ++g) {
+      for (int c : order) {
+        for (int d = 0; d < 6; ++d) {
+          if (group_[d] == g && !mesh_.carriers[c].anchor[d]) dof_[6 * c + d] = free_++;
+        }
+      }
+    }
+    for (const FrameMesh::Element& element : mesh_.elements) {
+      std::array<int, 12> dofs;
+      for (int a = 0; a < 12; ++a) {
+        dofs[a] = CarrierDof(mesh_.nodes[a < 6 ? element.from : element.to].carrier, a % 6);
+      }
+      element_dofs_.push_back(dofs);
     }
   }
 
   int Bandwidth() const {
     int bandwidth = 0;
     for (const std::array<int, 12>& dofs : element_dofs_) {
-      int low = free_, high = -1;
-      for (int r : dofs) {
-        if (r < 0) continue;
-        low = std::min(low, r);
-        high = std::max(high, r);
+      for (int a = 0; a < 12; ++a) {
+        for (int b = 0; b < a; ++b) {
+          if (dofs[a] >= 0 && dofs[b] >= 0 && Coupled(a, b))
+            bandwidth = std::max(bandwidth, std::abs(dofs[a] - dofs[b]));
+        }
       }
-      bandwidth = std::max(bandwidth, high - low);
     }
     for (int body : mesh_.body_carrier) {
       for (int d = 0; d < 6; ++d) {
         for (int k = 0; k < d; ++k) {
-          if (CarrierDof(body, d) >= 0 && CarrierDof(body, k) >= 0) {
+          if (CarrierDof(body, d) >= 0 && CarrierDof(body, k) >= 0 && Coupled(d, k)) {
             bandwidth = std::max(bandwidth, std::abs(CarrierDof(body, d) - CarrierDof(body, k)));
           }
         }
@@ -230,17 +290,19 @@ class FrameModel {
         for (int d = 0; d < 6; ++d) {
           const int rk = CarrierDof(carrier, k);
           const int rd = CarrierDof(carrier, d);
-          if (rk >= 0 && rd >= 0 && rk >= rd) mass_[0].Add(rk, rd, m(k, d));
+          if (rk >= 0 && rd >= 0 && rk >= rd && Coupled(k, d)) mass_[0].Add(rk, rd, m(k, d));
         }
       }
     }
   }
 
+  FrameCouplings couplings_;
   StructureDescription description_;
   UnitSystem units_;
   FrameBases bases_;
   FrameMesh mesh_;
   std::vector<Element> elements_;
+  std::array<int, 6> group_{};  ///< each direction's group: the root direction of its group
   std::vector<int> dof_;
   int free_ = 0;
   std::vector<std::array<int, 12>> element_dofs_;

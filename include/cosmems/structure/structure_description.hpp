@@ -2,8 +2,10 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cosmems/beam/frame_layout.hpp"
@@ -67,6 +69,14 @@ struct StructureDescription {
   int FindNode(const std::string& name) const {
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       if (nodes[i].name == name) return static_cast<int>(i);
+    }
+    return -1;
+  }
+
+  /// The index of the body named `name`, or -1.
+  int FindBody(const std::string& name) const {
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      if (bodies[i].name == name) return static_cast<int>(i);
     }
     return -1;
   }
@@ -165,5 +175,15 @@ struct StructureDescription {
     }
   }
 };
+
+/// Throws FieldError("structure.KEY", "must be positive") at the first of a parametric
+/// device's design parameters (KEY, value) that is not positive: a generator's refusal names the
+/// scene key that set it.
+inline void RequirePositiveDesign(
+    std::initializer_list<std::pair<const char*, double>> parameters) {
+  for (const auto& [key, value] : parameters) {
+    if (!(value > 0.0)) throw FieldError(std::string("structure.") + key, "must be positive");
+  }
+}
 
 }  // namespace cosmems

@@ -56,9 +56,10 @@ namespace cosmems {
 /// their damping as ratios). Steps allocate nothing.
 class NonlinearModalIntegrator {
  public:
-  /// `modal`: the modes of `model`; `patterns`: n x m load patterns.
-  template <int Dim>
-  NonlinearModalIntegrator(const BeamModel<Dim>& model, const ModalModel& modal,
+  /// `modal`: the modes of `model` (a BeamModel or a FrameModel); `patterns`: n x m load
+  /// patterns.
+  template <class Model>
+  NonlinearModalIntegrator(const Model& model, const ModalModel& modal,
                            const Eigen::MatrixXd& patterns, NonlinearForce& force, double time_step,
                            NewtonOptions options = {})
       : force_(force),

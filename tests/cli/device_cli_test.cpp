@@ -1,0 +1,249 @@
+// The parametric devices from the CLI: each embedded scene runs to its design's closed form, a
+// design key set with --set changes the answer as the closed form says, `cosmems netlist` prints
+// a frame scene that runs to the same answers, and the keys the devices share are read, refused
+// and listed once with the devices that read them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_test_support.hpp"
+#include "cosmems/scene/scene_loader.hpp"
+
+namespace cosmems {
+namespace {
+
+using testing::ExpectContains;
+using testing::InvalidInput;
+using testing::RunJson;
+
+// `cosmems netlist SCENE [--set ...]` run as a file, against the scene itself: every node's
+// displacement (static) or every frequency (modal) the same to round-off (numbers round-trip).
+void ExpectTheNetlistRunsTheSame(const std::string& scene, std::vector<std::string> sets = {}) {
+  std::vector<std::string> args = {"netlist", scene};
+  args.insert(args.end(), sets.begin(), sets.end());
+  const testing::CliOutcome netlist = testing::Cli(args);
+  ASSERT_EQ(netlist.code, 0) << netlist.err;
+  ExpectContains(netlist.out, "kind = \"frame\"");
+  const testing::TempDirectory dir(scene);
+  testing::WriteFile(dir.path() / "netlist.toml", netlist.out);
+  sets.insert(sets.begin(), scene);
+  const nlohmann::json device = RunJson(sets);
+  const nlohmann::json frame = RunJson({(dir.path() / "netlist.toml").string()});
+  if (device.contains("frequencies_hz")) {
+    ASSERT_EQ(frame["frequencies_hz"].size(), device["frequencies_hz"].size());
+    for (std::size_t i = 0; i < device["frequencies_hz"].size(); ++i) {
+      const double f = device["frequencies_hz"][i];
+      EXPECT_NEAR(frame["frequencies_hz"][i].get<double>(), f, 1e-12 * f) << scene;
+    }
+    return;
+  }
+  double scale = 0.0;
+  for (const auto& [name, node] : device["nodes"].items()) {
+    for (int k = 0; k < 3; ++k)
+      scale = std::max(scale, std::abs(node["displacement"][k].get<double>()));
+  }
+  ASSERT_GT(scale, 0.0);
+  ASSERT_EQ(frame["nodes"].size(), device["nodes"].size());
+  for (const auto& [name, node] : device["nodes"].items()) {
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(frame["nodes"][name]["displacement"][k].get<double>(),
+                  node["displacement"][k].get<double>(), 1e-12 * scale)
+          << scene << " " << name;
+    }
+  }
+  EXPECT_EQ(frame["reactions"].size(), device["reactions"].size());
+}
+
+double Moved(const nlohmann::json& json, const char* body, int k) {
+  return json["bodies"][body]["displacement"][k].get<double>();
+}
+
+// Fedder's stiffness takes the legs inextensible: the shin's axial strain softens its prop of
+// the thigh's knee, 1.4e-3 of k at these designs (crab_leg_test.cpp derives it exactly).
+TEST(DeviceCliTest, TheCrabLegMovesByFeddersStiffness) {
+  CrabLegDesign design;
+  EXPECT_NEAR(1e-6 / Moved(RunJson({"crab-leg"}), "shuttle", 0), design.Stiffness(),
+              2e-3 * design.Stiffness());
+  design.shin_length = 150e-6;
+  const nlohmann::json longer = RunJson({"crab-leg", "--set", "structure.shin_length=150e-6"});
+  EXPECT_NEAR(1e-6 / Moved(longer, "shuttle", 0), design.Stiffness(), 2e-3 * design.Stiffness());
+  ExpectTheNetlistRunsTheSame("crab-leg");
+  ExpectTheNetlistRunsTheSame("crab-leg", {"--set", "structure.thigh_width=3e-6"});
+  ExpectContains(InvalidInput({"run", "crab-leg", "--set", "structure.shuttle_width=3e-6"}),
+                 "structure.shuttle_width = 3e-06: too narrow for the legs");
+}
+
+// Out of the plane the closed form is exact for the frame's members: round-off.
+TEST(DeviceCliTest, TheSerpentinePlateSinksByItsClosedForm) {
+  SerpentineDesign design;
+  EXPECT_NEAR(-1e-6 / Moved(RunJson({"serpentine"}), "plate", 1), design.Stiffness(),
+              1e-9 * design.Stiffness());
+  design.turns = 7;
+  const nlohmann::json more = RunJson({"serpentine", "--set", "structure.turns=7"});
+  EXPECT_NEAR(-1e-6 / Moved(more, "plate", 1), design.Stiffness(), 1e-9 * design.Stiffness());
+  ExpectTheNetlistRunsTheSame("serpentine");
+  ExpectContains(InvalidInput({"run", "serpentine", "--set", "structure.connector_length=2e-6"}),
+                 "structure.connector_length = 2e-06: must exceed beam_width");
+  ExpectContains(InvalidInput({"run", "serpentine", "--set", "structure.turns=0"}),
+                 "structure.turns = 0: must be at least 1");
+}
+
+// The generator makes the `micromirror` netlist: the same modes. Rayleigh's frequency holds to
+// the series' discretisation (1.5e-10; 1e-8 asserted), the static twist to round-off.
+TEST(DeviceCliTest, TheTorsionalMicromirrorIsTheMicromirrorNetlist) {
+  TorsionalMicromirrorDesign design;
+  const nlohmann::json json = RunJson({"torsional-micromirror"});
+  const nlohmann::json netlist = RunJson({"micromirror"});
+  ASSERT_EQ(json["frequencies_hz"].size(), netlist["frequencies_hz"].size());
+  for (std::size_t i = 0; i < json["frequencies_hz"].size(); ++i) {
+    const double f = netlist["frequencies_hz"][i];
+    EXPECT_NEAR(json["frequencies_hz"][i].get<double>(), f, 1e-12 * f);
+  }
+  EXPECT_EQ(json["modes"][0]["kind"], "torsion");
+  EXPECT_NEAR(json["modes"][0]["frequency_hz"].get<double>(), design.NaturalFrequency(),
+              1e-8 * design.NaturalFrequency());
+  // Longer beams let the plate's out-of-plane mode fall below the torsion mode.
+  design.beam_length = 150e-6;
+  const nlohmann::json longer =
+      RunJson({"torsional-micromirror", "--set", "structure.beam_length=150e-6"});
+  EXPECT_EQ(longer["modes"][1]["kind"], "torsion");
+  EXPECT_NEAR(longer["modes"][1]["frequency_hz"].get<double>(), design.NaturalFrequency(),
+              1e-8 * design.NaturalFrequency());
+  const nlohmann::json turned =
+      RunJson({"torsional-micromirror", "--set", "analysis.type=\"static\""});
+  const double rotation = turned["bodies"]["mirror"]["rotation"][0];
+  EXPECT_NEAR(1e-12 / rotation, TorsionalMicromirrorDesign().Stiffness(),
+              1e-9 * TorsionalMicromirrorDesign().Stiffness());
+  ExpectTheNetlistRunsTheSame("torsional-micromirror");
+  ExpectContains(
+      InvalidInput({"run", "torsional-micromirror", "--set", "structure.beam_width=1e-4"}),
+      "structure.beam_width = 1e-04: wider than the plate's sides");
+}
+
+// Exact along x (round-off); the frequency within the beams' share of the mass (1 %).
+TEST(DeviceCliTest, TheAccelerometerMovesByMAOverK) {
+  AccelerometerDesign design;
+  EXPECT_NEAR(Moved(RunJson({"accelerometer"}), "proof_mass", 0), design.Displacement(9.80665),
+              1e-9 * design.Displacement(9.80665));
+  design.beam_length = 200e-6;
+  const nlohmann::json longer = RunJson({"accelerometer", "--set", "structure.beam_length=200e-6"});
+  EXPECT_NEAR(Moved(longer, "proof_mass", 0), design.Displacement(9.80665),
+              1e-9 * design.Displacement(9.80665));
+  const nlohmann::json modes = RunJson({"accelerometer", "--set", "analysis.type=\"modal\""});
+  const double f = AccelerometerDesign().NaturalFrequency();
+  EXPECT_EQ(modes["modes"][0]["kind"], "bending_z");
+  EXPECT_NEAR(modes["modes"][0]["frequency_hz"].get<double>(), f, 0.01 * f);
+  ExpectTheNetlistRunsTheSame("accelerometer");
+  ExpectTheNetlistRunsTheSame("accelerometer", {"--set", "analysis.type=\"modal\""});
+  ExpectContains(InvalidInput({"run", "accelerometer", "--set", "structure.mass_width=3e-6"}),
+                 "structure.mass_width = 3e-06: too narrow for the beams");
+}
+
+// Every design key, set on its device's scene, reaches the design.
+TEST(DeviceCliTest, EveryDesignKeyCanBeSet) {
+  struct Case {
+    const char* scene;
+    const char* key;
+    double (*field)(const SceneStructure&);
+  };
+  const Case cases[] = {
+      {"folded-flexure", "beam_length",
+       [](const SceneStructure& s) { return s.folded_flexure.beam_length; }},
+      {"folded-flexure", "beam_width",
+       [](const SceneStructure& s) { return s.folded_flexure.beam_width; }},
+      {"folded-flexure", "beam_spacing",
+       [](const SceneStructure& s) { return s.folded_flexure.beam_spacing; }},
+      {"folded-flexure", "truss_width",
+       [](const SceneStructure& s) { return s.folded_flexure.truss_width; }},
+      {"folded-flexure", "shuttle_width",
+       [](const SceneStructure& s) { return s.folded_flexure.shuttle_width; }},
+      {"folded-flexure", "shuttle_length",
+       [](const SceneStructure& s) { return s.folded_flexure.shuttle_length; }},
+      {"crab-leg", "thigh_length", [](const SceneStructure& s) { return s.crab_leg.thigh_length; }},
+      {"crab-leg", "thigh_width", [](const SceneStructure& s) { return s.crab_leg.thigh_width; }},
+      {"crab-leg", "shin_length", [](const SceneStructure& s) { return s.crab_leg.shin_length; }},
+      {"crab-leg", "shin_width", [](const SceneStructure& s) { return s.crab_leg.shin_width; }},
+      {"crab-leg", "shuttle_width",
+       [](const SceneStructure& s) { return s.crab_leg.shuttle_width; }},
+      {"crab-leg", "shuttle_length",
+       [](const SceneStructure& s) { return s.crab_leg.shuttle_length; }},
+      {"serpentine", "span_length",
+       [](const SceneStructure& s) { return s.serpentine.span_length; }},
+      {"serpentine", "connector_length",
+       [](const SceneStructure& s) { return s.serpentine.connector_length; }},
+      {"serpentine", "beam_width", [](const SceneStructure& s) { return s.serpentine.beam_width; }},
+      {"serpentine", "turns", [](const SceneStructure& s) { return double(s.serpentine.turns); }},
+      {"serpentine", "plate_width",
+       [](const SceneStructure& s) { return s.serpentine.plate_width; }},
+      {"serpentine", "plate_length",
+       [](const SceneStructure& s) { return s.serpentine.plate_length; }},
+      {"torsional-micromirror", "beam_length",
+       [](const SceneStructure& s) { return s.torsional_micromirror.beam_length; }},
+      {"torsional-micromirror", "beam_width",
+       [](const SceneStructure& s) { return s.torsional_micromirror.beam_width; }},
+      {"torsional-micromirror", "plate_width",
+       [](const SceneStructure& s) { return s.torsional_micromirror.plate_width; }},
+      {"torsional-micromirror", "plate_length",
+       [](const SceneStructure& s) { return s.torsional_micromirror.plate_length; }},
+      {"accelerometer", "beam_length",
+       [](const SceneStructure& s) { return s.accelerometer.beam_length; }},
+      {"accelerometer", "beam_width",
+       [](const SceneStructure& s) { return s.accelerometer.beam_width; }},
+      {"accelerometer", "mass_width",
+       [](const SceneStructure& s) { return s.accelerometer.mass_width; }},
+      {"accelerometer", "mass_length",
+       [](const SceneStructure& s) { return s.accelerometer.mass_length; }},
+  };
+  for (const Case& c : cases) {
+    const double before = c.field(LoadScene(c.scene).structure);
+    const double after = std::string(c.key) == "turns" ? before + 1 : before * 1.25;
+    std::ostringstream value;
+    value << std::setprecision(17) << after;
+    const Scene scene =
+        LoadScene(c.scene, {SceneOverride{std::string("structure.") + c.key, value.str()}});
+    EXPECT_EQ(c.field(scene.structure), after) << c.scene << " " << c.key;
+  }
+}
+
+// A key several devices read is read by each, refused by the others naming them all, listed once
+// in the key reference with them, and a typo lists only what the scene's kind reads.
+TEST(DeviceCliTest, SharedKeysAreListedOnceAndUnknownKeysListTheKindsOwn) {
+  ExpectContains(InvalidInput({"run", "crab-leg", "--set", "structure.beam_width=3e-6"}),
+                 "structure.beam_width = 3e-06: only structure.kind = \"folded_flexure\", "
+                 "\"serpentine\", \"torsional_micromirror\" or \"accelerometer\" takes it");
+  ExpectContains(InvalidInput({"run", "serpentine", "--set", "structure.shuttle_width=4e-5"}),
+                 "only structure.kind = \"folded_flexure\" or \"crab_leg\" takes it");
+  ExpectContains(InvalidInput({"run", "crab-leg", "--set", "structure.shin_lenght=1e-4"}),
+                 "unknown key (expected kind, thickness, gap, shuttle_width, shuttle_length, "
+                 "thigh_length, thigh_width, shin_length or shin_width)");
+  ExpectContains(InvalidInput({"run", "accelerometer", "--set", "structure.mass=1e-4"}),
+                 "unknown key (expected kind, thickness, gap, beam_length, beam_width, mass_width "
+                 "or mass_length)");
+  const testing::CliOutcome keys = testing::Cli({"keys"});
+  ASSERT_EQ(keys.code, 0);
+  auto rows = [&](const std::string& key) {
+    std::size_t count = 0;
+    for (std::size_t at = keys.out.find("| `" + key + "` |"); at != std::string::npos;
+         at = keys.out.find("| `" + key + "` |", at + 1)) {
+      ++count;
+    }
+    return count;
+  };
+  EXPECT_EQ(rows("structure.beam_width"), 1u);
+  EXPECT_EQ(rows("structure.plate_length"), 1u);
+  ExpectContains(keys.out,
+                 "| `structure.beam_width` | > 0, 1e-12 … 1 m | 2e-06 (`folded_flexure`, "
+                 "`serpentine`), 3e-06 (`torsional_micromirror`), 1.5e-06 (`accelerometer`) | "
+                 "only structure.kind = \"folded_flexure\", \"serpentine\", "
+                 "\"torsional_micromirror\" or \"accelerometer\": ");
+  ExpectContains(keys.out,
+                 "| `structure.plate_length` | > 0, 1e-12 … 1 m | 1e-04 | only "
+                 "structure.kind = \"serpentine\" or \"torsional_micromirror\": ");
+}
+
+}  // namespace
+}  // namespace cosmems
