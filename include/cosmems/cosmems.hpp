@@ -5,6 +5,8 @@
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/beam_stepper_factory.hpp"
 #include "cosmems/analysis/buckling_analysis.hpp"
+#include "cosmems/analysis/comb_drive.hpp"
+#include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/fold_search.hpp"

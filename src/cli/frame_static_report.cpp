@@ -1,6 +1,7 @@
 #include "frame_static_report.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "cosmems/scene/frame_conversion.hpp"
 #include "csv_file.hpp"
@@ -22,10 +23,16 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure, MakeFrameCouplings(scene));
   const FrameLoadCase loads = MakeFrameLoadCase(scene, structure);
+  std::vector<CombDrive> combs = MakeCombDrives(scene, structure);
+  std::vector<CombDriveState> comb_states;
   FrameStaticSolution solution;
   if (scene.model.theory == Theory::kStretching) {
     FrameStretchingForce force(model);
     solution = SolveFrameNonlinearStatic(model, force, loads);
+  } else if (!combs.empty()) {
+    CombDriveSolution driven = SolveCombDrives(model, loads, combs);
+    solution = std::move(driven.statics);
+    comb_states = std::move(driven.combs);
   } else {
     solution = SolveFrameStatic(model, loads);
   }
@@ -39,7 +46,8 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
                                   scene.structure.gap);
   }
   return std::make_unique<FrameStaticReport>(std::move(header), std::move(structure),
-                                             std::move(solution));
+                                             std::move(solution), std::move(combs),
+                                             std::move(comb_states));
 }
 
 void FrameStaticReport::AddResults(nlohmann::ordered_json& json) const {
@@ -63,6 +71,24 @@ void FrameStaticReport::AddResults(nlohmann::ordered_json& json) const {
   json["nodes"] = nodes;
   json["bodies"] = bodies;
   json["reactions"] = reactions;
+  if (comb_states_.empty()) return;
+  nlohmann::ordered_json capacitances = nlohmann::ordered_json::array();
+  nlohmann::ordered_json side = nlohmann::ordered_json::array();
+  nlohmann::ordered_json combs = nlohmann::ordered_json::array();
+  for (std::size_t c = 0; c < comb_states_.size(); ++c) {
+    const CombDriveState& state = comb_states_[c];
+    capacitances.push_back(state.capacitance_f);
+    // null: no voltage up to a million times the scene's reaches it.
+    side.push_back(std::isfinite(state.side_instability_voltage_v)
+                       ? nlohmann::ordered_json(state.side_instability_voltage_v)
+                       : nlohmann::ordered_json());
+    combs.push_back({{"body", structure_.bodies[combs_[c].body].name},
+                     {"force_n", state.force_n},
+                     {"engagement_m", state.engagement_m}});
+  }
+  json["capacitance_f"] = {{"combs", capacitances}};
+  json["side_instability_voltage_v"] = side;
+  json["combs"] = combs;
 }
 
 void FrameStaticReport::PrintResults(std::ostream& out) const {
@@ -82,6 +108,17 @@ void FrameStaticReport::PrintResults(std::ostream& out) const {
   for (const FrameReaction& r : solution_.reactions) {
     out << "reaction " << structure_.nodes[r.node].name << "  " << Vector(r.force) << " N, "
         << Vector(r.moment) << " N m\n";
+  }
+  for (std::size_t c = 0; c < comb_states_.size(); ++c) {
+    const CombDriveState& state = comb_states_[c];
+    out << "comb " << c << " on " << structure_.bodies[combs_[c].body].name << "  force "
+        << Scientific(state.force_n) << " N, engaged " << Scientific(state.engagement_m) << " m, "
+        << Scientific(state.capacitance_f) << " F, side instability at ";
+    if (std::isfinite(state.side_instability_voltage_v)) {
+      out << Significant(state.side_instability_voltage_v, 4) << " V\n";
+    } else {
+      out << "no voltage up to 1e6 times the scene's\n";
+    }
   }
 }
 

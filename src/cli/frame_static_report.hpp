@@ -5,19 +5,24 @@
 #include <vector>
 
 #include "analysis_report.hpp"
+#include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
 
 namespace cosmems::internal {
 
 /// A frame's linear statics: every node's and body's motion, the reactions at the anchors and
-/// the members' largest deflection, stress and axial force (doc/cli.md, static, frames).
+/// the members' largest deflection, stress and axial force, and its comb drives' forces,
+/// engagements, capacitances and side-instability voltages (doc/cli.md, static, frames).
 class FrameStaticReport final : public AnalysisReport {
  public:
-  FrameStaticReport(RunHeader header, StructureDescription structure, FrameStaticSolution solution)
+  FrameStaticReport(RunHeader header, StructureDescription structure, FrameStaticSolution solution,
+                    std::vector<CombDrive> combs, std::vector<CombDriveState> comb_states)
       : AnalysisReport(std::move(header)),
         structure_(std::move(structure)),
-        solution_(std::move(solution)) {}
+        solution_(std::move(solution)),
+        combs_(std::move(combs)),
+        comb_states_(std::move(comb_states)) {}
 
   static std::unique_ptr<FrameStaticReport> Run(const Scene& scene);
 
@@ -34,6 +39,8 @@ class FrameStaticReport final : public AnalysisReport {
  private:
   StructureDescription structure_;
   FrameStaticSolution solution_;
+  std::vector<CombDrive> combs_;
+  std::vector<CombDriveState> comb_states_;  ///< one per comb when the solve succeeded
 };
 
 }  // namespace cosmems::internal

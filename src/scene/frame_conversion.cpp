@@ -89,6 +89,22 @@ FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& 
   return out;
 }
 
+std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescription& structure) {
+  std::vector<CombDrive> out;
+  for (const SceneComb& c : scene.effects.combs) {
+    CombDrive comb;
+    comb.body = structure.FindBody(c.body);
+    comb.fingers = c.fingers;
+    comb.gap = c.gap;
+    comb.overlap = c.overlap;
+    comb.direction = c.direction;
+    comb.thickness = structure.bodies.at(static_cast<std::size_t>(comb.body)).size.y();
+    comb.voltage = c.voltage;
+    out.push_back(comb);
+  }
+  return out;
+}
+
 std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,
                                               const StructureDescription& structure) {
   std::vector<FrameRecordPoint> named, out;

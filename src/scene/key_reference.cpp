@@ -216,6 +216,7 @@ std::string SceneKeyReference() {
   Table(out, "materials.NAME", [&](auto& v) { VisitMaterial(v, s.material); });
   Table(out, "model", [&](auto& v) { VisitModel(v, s.model); });
   Table(out, "loads", [&](auto& v) { VisitLoads(v, s.loads, f, f.kind, s.structure.kind); });
+  Table(out, "effects", [&](auto& v) { VisitEffects(v, s.effects, StructureKind::kFrame); });
   Table(out, "effects.contact", [&](auto& v) { VisitContact(v, contact); });
   Table(out, "effects.stiction", [&](auto& v) { VisitStiction(v, stiction); });
   Table(out, "effects.electrostatic", [&](auto& v) { VisitElectrostatic(v, electrostatic); });

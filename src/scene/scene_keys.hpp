@@ -339,6 +339,28 @@ void VisitSqueezeFilm(V& v, SqueezeFilmEffect& s) {
 }
 
 template <class V>
+void VisitComb(V& v, SceneComb& c) {
+  v.Text("body", c.body, "the body carrying the movable fingers");
+  v.Integer("fingers", c.fingers, IntegerRange{1, kMaxFingers},
+            "movable fingers, each between two fixed ones");
+  v.Required("gap", c.gap, Positive(kLength), "between a finger and each fixed neighbour");
+  v.Required("overlap", c.overlap, Positive(kLength), "the fingers' engagement at rest");
+  v.Vector("direction", c.direction, kDirection,
+           "the direction the comb engages in, in the substrate plane (y = 0)");
+  v.Required("voltage", c.voltage, AnySign(kVoltage), "across the fingers");
+}
+
+// The keys of [effects] itself (its tables are read one by one).
+template <class V>
+void VisitEffects(V& v, SceneEffects& e, StructureKind kind) {
+  v.Scope("a device", IsDevice(kind), Unchosen::kRefused);
+  v.Entries(
+      "combs", e.combs, [](auto& c, SceneComb& comb) { VisitComb(c, comb); },
+      "[[effects.combs]]: comb drives between a body and an anchor: the engagement force "
+      "fingers eps0 t V^2 / gap at the body's centre, t the body's thickness");
+}
+
+template <class V>
 void VisitAnalysis(V& v, SceneAnalysis& a, AnalysisType type, Integrator integrator,
                    StructureKind kind) {
   v.RequiredChoice("type", a.type, kAnalysisTypes, "analysis type", "what to compute");

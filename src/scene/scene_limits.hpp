@@ -66,6 +66,8 @@ constexpr int kMaxElements = 100000;
 constexpr int kMaxSeriesOrder = 6;
 // A serpentine spring's spans: real ones have a few to a few tens; each adds two members.
 constexpr int kMaxTurns = 100;
+// A comb drive's movable fingers: real ones have tens to a few hundred.
+constexpr int kMaxFingers = 100000;
 // analysis.count and model.modes. Where the wanted modes span a quarter of the model or more, the
 // modal solver solves the whole problem densely, O(n^3) for each root at series order >= 1:
 // 100 modes (up to 400 unknowns) were measured at 10 s at order 6, 200 (600 unknowns) at a

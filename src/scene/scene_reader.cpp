@@ -105,8 +105,10 @@ SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structu
   if (!r.HasTable("effects")) return e;
   r.RejectUnknownKeys("effects",
                       {"contact", "stiction", "electrostatic", "casimir", "van_der_waals",
-                       "damping", "squeeze_film"},
+                       "damping", "squeeze_film", "combs"},
                       "effect");
+  KeyReader effects(r, "effects");
+  VisitEffects(effects, e, structure.kind);
   e.contact = ReadEffect<ContactEffect>(r, "contact",
                                         [](auto& v, ContactEffect& c) { VisitContact(v, c); });
   e.stiction = ReadEffect<StictionEffect>(r, "stiction",
@@ -425,6 +427,18 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
     if (p.body) {
       r.Require(structure.FindBody(*p.body) >= 0, entry + ".body", "no body \"" + *p.body + "\"");
     }
+  }
+  for (std::size_t i = 0; i < scene.effects.combs.size(); ++i) {
+    const SceneComb& comb = scene.effects.combs[i];
+    const std::string entry = "effects.combs[" + std::to_string(i) + "]";
+    r.Require(type == AnalysisType::kStatic, entry,
+              "a comb drive acts in the \"static\" analysis (its force, capacitance and side "
+              "instability)");
+    r.Require(scene.model.theory == Theory::kLinear, entry,
+              "a comb drive takes model.theory = \"linear\"");
+    r.Require(structure.FindBody(comb.body) >= 0, entry + ".body", "no body \"" + comb.body + "\"");
+    r.Require(comb.direction.y() == 0.0 && !comb.direction.isZero(0.0), entry + ".direction",
+              "must be a non-zero direction in the substrate plane (y = 0)");
   }
   if (type != AnalysisType::kTransient) return;
   const std::vector<std::string>& record = scene.analysis.record;

@@ -265,7 +265,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown device backend (expected \"scripted\" or \"openhaptics\")"},
         BadScene{"effect", With("effects.magnetic", "{}"), "effects.magnetic = {}",
                  "unknown effect (expected contact, stiction, electrostatic, casimir, "
-                 "van_der_waals, damping or squeeze_film)"},
+                 "van_der_waals, damping, squeeze_film or combs)"},
         BadScene{"table", With("substrate.gap", "1e-6"), "substrate = { gap = 1e-06 }",
                  "unknown table (expected structure, material,"},
         BadScene{"root_key", With("title", "\"my beam\""), "title = \"my beam\"", "unknown table"},

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
@@ -21,6 +22,9 @@ FrameCouplings MakeFrameCouplings(const Scene& scene);
 
 /// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.
 FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure);
+
+/// The scene's [[effects.combs]] on their bodies, each as thick as its body.
+std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescription& structure);
 
 /// The points a device's transient records: the nodes and bodies of analysis.record (a name that
 /// is a node and a body is the node), then every other body's centre. The first is watched.

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace cosmems {
 
@@ -58,6 +61,16 @@ struct SqueezeFilmEffect {
   std::optional<double> mean_free_path;  ///< m, >= 0 (default 0: no rarefaction)
 };
 
+/// [[effects.combs]]: a comb drive between a body of a device and an anchor (CombDrive).
+struct SceneComb {
+  std::string body;                                      ///< the body carrying the movable fingers
+  int fingers = 0;                                       ///< movable fingers, >= 1
+  double gap = 0.0;                                      ///< m, on each side of a finger
+  double overlap = 0.0;                                  ///< m, the engagement at rest
+  Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< in the substrate plane
+  double voltage = 0.0;                                  ///< V
+};
+
 /// Whether an effect is simulated: its table present and not disabled.
 template <typename Effect>
 bool IsOn(const std::optional<Effect>& effect) {
@@ -73,6 +86,7 @@ struct SceneEffects {
   std::optional<VanDerWaalsEffect> van_der_waals;
   std::optional<DampingEffect> damping;
   std::optional<SqueezeFilmEffect> squeeze_film;
+  std::vector<SceneComb> combs;  ///< a device's comb drives
 
   /// Contact with the substrate: [effects.contact], or [effects.stiction], which implies it.
   bool HasContact() const { return IsOn(contact) || IsOn(stiction); }
