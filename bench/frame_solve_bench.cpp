@@ -1,7 +1,7 @@
 // Frames: static and modal solves of the folded-flexure resonator (structure/test_frames.hpp)
-// against elements per member, and the reference cantilever as a netlist (FrameModel, numbered
-// node by node in reverse Cuthill-McKee order) against the same beam as a chain (BeamModel,
-// numbered field by field), in the same run.
+// against elements per member, the serpentine plate's pull-in against elements per segment, and the
+// reference cantilever as a netlist (FrameModel, numbered node by node in reverse Cuthill-McKee
+// order) against the same beam as a chain (BeamModel, numbered field by field), in the same run.
 #include "reference_beam.hpp"
 #include "structure/test_frames.hpp"
 
@@ -48,6 +48,27 @@ void BM_FoldedFlexureModal(benchmark::State& state) {
   TimeSolve(state, model, [&] { return SolveFrameModal(model, options); });
 }
 BENCHMARK(BM_FoldedFlexureModal)->Apply(MemberElements)->Unit(benchmark::kMillisecond);
+
+// The pull-in of the serpentine-suspended plate over an electrode of its size at range(0)
+// elements per segment: the fold traced by displacement control of the plate (SolveFramePullIn,
+// the shape at the fold recovered), with its error against the parallel plate's
+// sqrt(8 k g^3 / (27 eps0 A)) on the springs' Castigliano stiffness as a counter.
+void BM_SerpentinePullIn(benchmark::State& state) {
+  SerpentineDesign design;
+  design.material = test::Poly();
+  design.elements = static_cast<int>(state.range(0));
+  const FrameModel model(Serpentine(design));
+  FramePullInOptions options;
+  options.electrodes.gap = 2e-6;
+  options.electrodes.electrodes = {Electrode{{-50e-6, 50e-6}, {-50e-6, 50e-6}}};
+  FramePullInResult result;
+  TimeSolve(state, model, [&] { return result = SolveFramePullIn(model, options); });
+  const double exact =
+      std::sqrt(8.0 * design.Stiffness() * 8e-18 / (27.0 * kVacuumPermittivity * 1e-8));
+  state.counters["voltage_error"] = std::abs(result.fold.voltage_v / exact - 1.0);
+  state.counters["solves"] = result.fold.solves;
+}
+BENCHMARK(BM_SerpentinePullIn)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
 
 // Model assembly of the folded flexure (members rotated, bodies eliminated, numbering).
 void BM_FoldedFlexureAssembly(benchmark::State& state) {

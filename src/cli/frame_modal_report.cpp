@@ -5,6 +5,7 @@
 
 #include "cosmems/analysis/frame_modal_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/structure/frame_stretching_force.hpp"
 #include "csv_file.hpp"
 #include "frame_shape.hpp"
 #include "text_format.hpp"
@@ -28,7 +29,7 @@ std::unique_ptr<FrameModalReport> FrameModalReport::Run(const Scene& scene) {
     // About the equilibrium under the scene's loads, where stretching has stiffened the members.
     FrameStretchingForce force(model);
     const FrameStaticSolution deflected =
-        SolveFrameNonlinearStatic(model, force, MakeFrameLoadCase(scene, structure));
+        SolveFrameNonlinearStatic(model, {&force}, MakeFrameLoadCase(scene, structure));
     result.modal.status = deflected.status;
     if (deflected.status == Status::kOk) {
       result = SolveFrameModalAbout(model, force, deflected.displacement, options);

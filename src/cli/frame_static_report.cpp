@@ -2,20 +2,14 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "cosmems/scene/frame_conversion.hpp"
-#include "csv_file.hpp"
-#include "json_vector.hpp"
+#include "cosmems/structure/frame_stretching_force.hpp"
+#include "frame_solution_output.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
-namespace {
-
-nlohmann::ordered_json MotionJson(const FrameModel::Motion& m) {
-  return {{"displacement", ToJson(m.head<3>())}, {"rotation", ToJson(m.tail<3>())}};
-}
-
-}  // namespace
 
 std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   RunHeader header = RunHeader::Start(scene);
@@ -26,9 +20,21 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   std::vector<CombDrive> combs = MakeCombDrives(scene, structure);
   std::vector<CombDriveState> comb_states;
   FrameStaticSolution solution;
-  if (scene.model.theory == Theory::kStretching) {
-    FrameStretchingForce force(model);
-    solution = SolveFrameNonlinearStatic(model, force, loads);
+  std::optional<double> capacitance;
+  std::optional<FrameStretchingForce> stretching;
+  std::vector<FrameElementForce*> forces;
+  if (scene.model.theory == Theory::kStretching) forces.push_back(&stretching.emplace(model));
+  if (IsOn(scene.effects.electrostatic)) {
+    FrameGapForce<ElectrostaticPressure> electrostatic = MakeFrameElectrostaticForce(
+        model, MakeFramePullInOptions(scene), *scene.effects.electrostatic->voltage);
+    solution = SolveFrameNonlinearStatic(model, forces, loads, &electrostatic);
+    if (solution.status == Status::kOk) {
+      capacitance = electrostatic.Integrate(solution.displacement, [](const auto& p, double gap) {
+        return p.CapacitancePerArea(gap);
+      });
+    }
+  } else if (!forces.empty()) {
+    solution = SolveFrameNonlinearStatic(model, forces, loads);
   } else if (!combs.empty()) {
     CombDriveSolution driven = SolveCombDrives(model, loads, combs);
     solution = std::move(driven.statics);
@@ -41,36 +47,30 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   header.status = solution.status;
   header.dofs = model.FreeDofCount();
   header.model.elements = model.ElementCount();
-  if (solution.status == Status::kOk) {
+  if (solution.status == Status::kOk && !IsOn(scene.effects.electrostatic)) {
     header.WarnIfThroughSubstrate("the linear solution deflects", solution.max_deflection,
                                   scene.structure.gap);
   }
+  // A supported device that finds no equilibrium under its voltage has pulled in: its tangent
+  // turned indefinite on the way, which is no fault of its supports.
+  if (solution.status != Status::kOk && IsOn(scene.effects.electrostatic) &&
+      SpdSolver().Compute(model.Stiffness()) == Status::kOk) {
+    header.status = Status::kNotConverged;
+    header.warnings.push_back(
+        "no equilibrium up to effects.electrostatic.voltage: the device pulls in below it (run "
+        "analysis.type = \"pullin\" for the voltage)");
+  }
   return std::make_unique<FrameStaticReport>(std::move(header), std::move(structure),
                                              std::move(solution), std::move(combs),
-                                             std::move(comb_states));
+                                             std::move(comb_states), capacitance);
 }
 
 void FrameStaticReport::AddResults(nlohmann::ordered_json& json) const {
-  nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
-  for (std::size_t n = 0; n < structure_.nodes.size(); ++n) {
-    nodes[structure_.nodes[n].name] = MotionJson(solution_.nodes[n]);
-  }
-  nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
-  for (std::size_t b = 0; b < structure_.bodies.size(); ++b) {
-    bodies[structure_.bodies[b].name] = MotionJson(solution_.bodies[b]);
-  }
-  nlohmann::ordered_json reactions = nlohmann::ordered_json::object();
-  for (const FrameReaction& r : solution_.reactions) {
-    reactions[structure_.nodes[r.node].name] = {{"force", ToJson(r.force)},
-                                                {"moment", ToJson(r.moment)}};
-  }
-  json["max_deflection"] = solution_.max_deflection;
-  json["max_stress_pa"] = solution_.max_stress_pa;
-  json["axial_force_n"] = solution_.axial_force_n;
+  AddFrameSolution(structure_, solution_, json);
   json["collapsed"] = false;
-  json["nodes"] = nodes;
-  json["bodies"] = bodies;
-  json["reactions"] = reactions;
+  if (electrostatic_capacitance_f_) {
+    json["capacitance_f"] = {{"electrostatic", *electrostatic_capacitance_f_}};
+  }
   if (comb_states_.empty()) return;
   nlohmann::ordered_json capacitances = nlohmann::ordered_json::array();
   nlohmann::ordered_json side = nlohmann::ordered_json::array();
@@ -92,22 +92,10 @@ void FrameStaticReport::AddResults(nlohmann::ordered_json& json) const {
 }
 
 void FrameStaticReport::PrintResults(std::ostream& out) const {
-  out << "max deflection        " << Scientific(solution_.max_deflection)
-      << " m toward the substrate\n";
-  out << "max stress            " << Scientific(solution_.max_stress_pa) << " Pa\n";
-  out << "axial force           " << Scientific(solution_.axial_force_n)
-      << " N (the largest in a member)\n";
-  for (std::size_t n = 0; n < structure_.nodes.size(); ++n) {
-    out << "node " << structure_.nodes[n].name << "  " << Vector(solution_.nodes[n].head<3>())
-        << " m\n";
-  }
-  for (std::size_t b = 0; b < structure_.bodies.size(); ++b) {
-    out << "body " << structure_.bodies[b].name << "  " << Vector(solution_.bodies[b].head<3>())
-        << " m, " << Vector(solution_.bodies[b].tail<3>()) << " rad\n";
-  }
-  for (const FrameReaction& r : solution_.reactions) {
-    out << "reaction " << structure_.nodes[r.node].name << "  " << Vector(r.force) << " N, "
-        << Vector(r.moment) << " N m\n";
+  PrintFrameSolution(structure_, solution_, out);
+  if (electrostatic_capacitance_f_) {
+    out << "capacitance           " << Scientific(*electrostatic_capacitance_f_)
+        << " F (the faces over the electrodes)\n";
   }
   for (std::size_t c = 0; c < comb_states_.size(); ++c) {
     const CombDriveState& state = comb_states_[c];
@@ -123,27 +111,7 @@ void FrameStaticReport::PrintResults(std::ostream& out) const {
 }
 
 void FrameStaticReport::WriteFiles(const std::filesystem::path& directory) const {
-  CsvFile motions(directory / "nodes.csv", "name,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
-  auto row = [&](const std::string& name, const FrameModel::Motion& m) {
-    std::vector<std::string> cells = {name};
-    for (int k = 0; k < 6; ++k) cells.push_back(CsvFile::Number(m[k]));
-    motions.Row(cells);
-  };
-  for (std::size_t n = 0; n < structure_.nodes.size(); ++n) {
-    row(structure_.nodes[n].name, solution_.nodes[n]);
-  }
-  for (std::size_t b = 0; b < structure_.bodies.size(); ++b) {
-    row(structure_.bodies[b].name, solution_.bodies[b]);
-  }
-  motions.Close();
-  CsvFile reactions(directory / "reactions.csv", "node,fx_n,fy_n,fz_n,mx_nm,my_nm,mz_nm");
-  for (const FrameReaction& r : solution_.reactions) {
-    std::vector<std::string> cells = {structure_.nodes[r.node].name};
-    for (int k = 0; k < 3; ++k) cells.push_back(CsvFile::Number(r.force[k]));
-    for (int k = 0; k < 3; ++k) cells.push_back(CsvFile::Number(r.moment[k]));
-    reactions.Row(cells);
-  }
-  reactions.Close();
+  WriteFrameSolution(structure_, solution_, directory);
 }
 
 }  // namespace cosmems::internal

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,18 +12,21 @@
 
 namespace cosmems::internal {
 
-/// A frame's linear statics: every node's and body's motion, the reactions at the anchors and
-/// the members' largest deflection, stress and axial force, and its comb drives' forces,
-/// engagements, capacitances and side-instability voltages (doc/cli.md, static, frames).
+/// A frame's statics: every node's and body's motion, the reactions at the anchors and the
+/// members' largest deflection, stress and axial force; the capacitance of its electrodes, and
+/// its comb drives' forces, engagements, capacitances and side-instability voltages (doc/cli.md,
+/// static, frames).
 class FrameStaticReport final : public AnalysisReport {
  public:
   FrameStaticReport(RunHeader header, StructureDescription structure, FrameStaticSolution solution,
-                    std::vector<CombDrive> combs, std::vector<CombDriveState> comb_states)
+                    std::vector<CombDrive> combs, std::vector<CombDriveState> comb_states,
+                    std::optional<double> electrostatic_capacitance_f)
       : AnalysisReport(std::move(header)),
         structure_(std::move(structure)),
         solution_(std::move(solution)),
         combs_(std::move(combs)),
-        comb_states_(std::move(comb_states)) {}
+        comb_states_(std::move(comb_states)),
+        electrostatic_capacitance_f_(electrostatic_capacitance_f) {}
 
   static std::unique_ptr<FrameStaticReport> Run(const Scene& scene);
 
@@ -41,6 +45,8 @@ class FrameStaticReport final : public AnalysisReport {
   FrameStaticSolution solution_;
   std::vector<CombDrive> combs_;
   std::vector<CombDriveState> comb_states_;  ///< one per comb when the solve succeeded
+  /// F: the faces over the electrodes, in the solved state (with [effects.electrostatic]).
+  std::optional<double> electrostatic_capacitance_f_;
 };
 
 }  // namespace cosmems::internal

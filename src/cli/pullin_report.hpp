@@ -5,6 +5,7 @@
 
 #include "analysis_report.hpp"
 #include "cosmems/analysis/fold_search.hpp"
+#include "cosmems/analysis/pullin_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
 
 namespace cosmems::internal {
@@ -20,6 +21,17 @@ struct PullInResults {
   int iterations = 0;
   Eigen::MatrixXd shape;  ///< the last stable state: one row per node, x (m), ux ... rz
 };
+
+/// A solved pull-in's results (all but the shape), and the header's warning when no fold lies
+/// below analysis.voltage_max.
+PullInResults ToPullInResults(const PullInResult& result, double gap_m, const Scene& scene,
+                              RunHeader& header);
+
+/// pullin_voltage_v, pullin_displacement_m, pullin_travel_m, pullin_instability, solves and
+/// newton_iterations: what every pull-in reports.
+void AddPullInFields(const PullInResults& results, nlohmann::ordered_json& json);
+/// The same as text.
+void PrintPullInFields(const PullInResults& results, std::ostream& out);
 
 /// Electrostatic pull-in by displacement control (SolvePullIn) with the scene's theory and
 /// surface forces: pullin_voltage_v, pullin_displacement_m and pullin_shape.csv.

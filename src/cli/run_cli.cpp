@@ -15,6 +15,7 @@
 #include "cosmems/scene/scene_loader.hpp"
 #include "frame_buckling_report.hpp"
 #include "frame_modal_report.hpp"
+#include "frame_pullin_report.hpp"
 #include "frame_static_report.hpp"
 #include "haptic_report.hpp"
 #include "modal_report.hpp"
@@ -47,9 +48,11 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs the static, modal, buckling and transient analyses (the scene reader refuses
-  // the others).
+  // A device runs the static, modal, buckling, transient and pull-in analyses (the scene reader
+  // refuses the others).
   if (IsDevice(scene.structure.kind)) {
+    if (scene.analysis.type == AnalysisType::kPullin)
+      return internal::FramePullInReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kTransient)
       return internal::TransientReport::Run(scene);

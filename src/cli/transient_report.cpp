@@ -12,6 +12,7 @@
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
+#include "cosmems/structure/frame_stretching_force.hpp"
 #include "csv_file.hpp"
 #include "text_format.hpp"
 

@@ -1,6 +1,7 @@
 #include "cosmems/scene/frame_conversion.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "cosmems/scene/scene_conversion.hpp"
 
@@ -102,6 +103,19 @@ std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescrip
     comb.voltage = c.voltage;
     out.push_back(comb);
   }
+  return out;
+}
+
+FramePullInOptions MakeFramePullInOptions(const Scene& scene) {
+  FramePullInOptions out;
+  const ElectrostaticEffect& e = *scene.effects.electrostatic;
+  out.electrodes.gap = *scene.structure.gap;
+  if (!e.electrodes.empty()) {
+    out.electrodes.electrodes.clear();
+    for (const SceneElectrode& r : e.electrodes) out.electrodes.electrodes.push_back({r.x, r.z});
+  }
+  out.fringing = e.fringing;
+  if (scene.analysis.voltage_max) out.fold.max_load = std::pow(*scene.analysis.voltage_max, 2);
   return out;
 }
 

@@ -213,6 +213,16 @@ class KeyReader {
     r_.RequireWithin(key + "[1]", b, second);
     field = std::array<double, 2>{a, b};
   }
+  void Interval(const char* name, std::array<double, 2>& field, const Bounds& bounds, const char*) {
+    if (!Reads(name)) return;
+    const std::string key = Key(name);
+    if (r_.Find(key) == nullptr) r_.FailMissing(key);
+    const std::vector<double> values = *r_.OptionalNumbers(key, 2);
+    r_.RequireWithin(key + "[0]", values[0], bounds);
+    r_.RequireWithin(key + "[1]", values[1], bounds);
+    r_.Require(values[0] < values[1], key, "must run from the smaller value to the larger");
+    field = {values[0], values[1]};
+  }
   void Position(const char* name, std::optional<double>& field, const char*) {
     if (!Reads(name)) return;
     const std::string key = Key(name);

@@ -63,6 +63,10 @@ class KeyReference {
             const Bounds& second, const char* meaning) {
     Row(name, "`[a, b]`: " + Range(first) + "; " + Range(second), "none", meaning);
   }
+  void Interval(const char* name, std::array<double, 2>&, const Bounds& bounds,
+                const char* meaning) {
+    Row(name, "`[from, to]`, each " + Range(bounds) + ", from < to", "required", meaning);
+  }
   void Position(const char* name, std::optional<double>&, const char* meaning) {
     Row(name, "0 … `structure.length` m", "see meaning", meaning);
   }
@@ -219,7 +223,8 @@ std::string SceneKeyReference() {
   Table(out, "effects", [&](auto& v) { VisitEffects(v, s.effects, StructureKind::kFrame); });
   Table(out, "effects.contact", [&](auto& v) { VisitContact(v, contact); });
   Table(out, "effects.stiction", [&](auto& v) { VisitStiction(v, stiction); });
-  Table(out, "effects.electrostatic", [&](auto& v) { VisitElectrostatic(v, electrostatic); });
+  Table(out, "effects.electrostatic",
+        [&](auto& v) { VisitElectrostatic(v, electrostatic, StructureKind::kFrame); });
   Table(out, "effects.casimir", [&](auto& v) { VisitCasimir(v, casimir); });
   Table(out, "effects.van_der_waals", [&](auto& v) { VisitVanDerWaals(v, van_der_waals); });
   Table(out, "effects.damping", [&](auto& v) { VisitDamping(v, damping); });

@@ -27,6 +27,7 @@ namespace cosmems::internal {
 //   Text(NAME, std::string&, meaning)
 //   Vector(NAME, Eigen::Vector3d&, Bounds, meaning)
 //   Pair(NAME, std::optional<std::array<double, 2>>&, Bounds, Bounds, meaning)
+//   Interval(NAME, std::array<double, 2>&, Bounds, meaning)  required [from, to], from < to
 //   Position(NAME, std::optional<double>&, meaning)       a point of the beam, in [0, length]
 //   Design(NAME, kind, {{KIND, &field}, ...}, NumberRule or IntegerRange, meaning)
 //       a parametric device's design key, one meaning for every KIND listed: read into the
@@ -300,13 +301,25 @@ void VisitStiction(V& v, StictionEffect& s) {
 }
 
 template <class V>
-void VisitElectrostatic(V& v, ElectrostaticEffect& e) {
+void VisitElectrode(V& v, SceneElectrode& e) {
+  v.Interval("x", e.x, kCoordinate, "the rectangle's extent along x, [from, to]");
+  v.Interval("z", e.z, kCoordinate, "the rectangle's extent along z, [from, to]");
+}
+
+template <class V>
+void VisitElectrostatic(V& v, ElectrostaticEffect& e, StructureKind kind) {
   v.Flag("enabled", e.enabled, "false: declared but not simulated");
   v.Number("voltage", e.voltage, AnySign(kVoltage), "required, except by a pull-in analysis",
            "across the gap (a pull-in analysis finds it)");
   v.Flag("fringing", e.fringing, "true: add the fringing-field correction");
+  v.Scope("a cantilever or a bridge", !IsDevice(kind), Unchosen::kRefused);
   v.Position("electrode_start", e.electrode_start, "the electrode's start; default: x = 0");
   v.Position("electrode_end", e.electrode_end, "the electrode's end; default: the length");
+  v.Scope("a device", IsDevice(kind), Unchosen::kRefused);
+  v.Entries(
+      "electrodes", e.electrodes, [](auto& c, SceneElectrode& r) { VisitElectrode(c, r); },
+      "rectangles on the substrate, e.g. [ { x = [0.0, 40e-6], z = [-30e-6, 30e-6] } ]; none: one "
+      "under all of the device");
 }
 
 template <class V>

@@ -114,12 +114,22 @@ SceneEffects ReadEffects(const TomlFieldReader& r, const SceneStructure& structu
   e.stiction = ReadEffect<StictionEffect>(r, "stiction",
                                           [](auto& v, StictionEffect& s) { VisitStiction(v, s); });
   e.electrostatic = ReadEffect<ElectrostaticEffect>(
-      r, "electrostatic", [](auto& v, ElectrostaticEffect& s) { VisitElectrostatic(v, s); },
+      r, "electrostatic",
+      [&](auto& v, ElectrostaticEffect& s) { VisitElectrostatic(v, s, structure.kind); },
       structure.length);
   if (e.electrostatic) {
     const ElectrostaticEffect& s = *e.electrostatic;
     r.Require(!s.electrode_start || !s.electrode_end || *s.electrode_start < *s.electrode_end,
               "effects.electrostatic.electrode_end", "must exceed electrode_start");
+    for (std::size_t i = 0; i < s.electrodes.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        const SceneElectrode &a = s.electrodes[i], &b = s.electrodes[j];
+        const bool overlap =
+            a.x[0] < b.x[1] && b.x[0] < a.x[1] && a.z[0] < b.z[1] && b.z[0] < a.z[1];
+        r.Require(!overlap, "effects.electrostatic.electrodes[" + std::to_string(i) + "]",
+                  "overlaps electrodes[" + std::to_string(j) + "]: their pressures would add");
+      }
+    }
   }
   e.casimir = ReadEffect<CasimirEffect>(r, "casimir",
                                         [](auto& v, CasimirEffect& c) { VisitCasimir(v, c); });
@@ -381,19 +391,23 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling and
-// transient analyses, linear or with its members' stretching, without surface effects (those act on
-// a cantilever or a bridge); its netlist must be sound, and its loads and recorded points must name
-// its nodes and bodies.
+// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling, transient
+// and pull-in analyses, linear or with its members' stretching; of the effects through the
+// substrate it takes the electrodes (static and pull-in), the others act on a cantilever or a
+// bridge. Its netlist must be sound, and its loads and recorded points must name its nodes and
+// bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
       std::string("structure.kind = \"") + ToString(scene.structure.kind) + "\"";
   const AnalysisType type = scene.analysis.type;
   r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-                type == AnalysisType::kBuckling || type == AnalysisType::kTransient,
+                type == AnalysisType::kBuckling || type == AnalysisType::kTransient ||
+                type == AnalysisType::kPullin,
             "analysis.type",
-            kind + " runs the \"static\", \"modal\", \"buckling\" and \"transient\" analyses");
+            kind +
+                " runs the \"static\", \"modal\", \"buckling\", \"transient\" and \"pullin\" "
+                "analyses");
   r.Require(type != AnalysisType::kBuckling || !scene.loads.points.empty() ||
                 !scene.loads.distributed.isZero(0.0),
             "analysis.type",
@@ -405,8 +419,24 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                 " takes the \"linear\" or \"stretching\" theory (the Cosserat rod is a "
                 "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
-  r.Require(!scene.effects.HasSurfaceEffect(), "effects",
-            "surface effects act on a cantilever or a bridge, not on " + kind);
+  const SceneEffects& e = scene.effects;
+  for (const auto& [on, table] :
+       {std::pair{IsOn(e.stiction), "effects.stiction"},
+        std::pair{e.HasContact(), "effects.contact"}, std::pair{IsOn(e.casimir), "effects.casimir"},
+        std::pair{IsOn(e.van_der_waals), "effects.van_der_waals"},
+        std::pair{IsOn(e.squeeze_film), "effects.squeeze_film"}}) {
+    r.Require(!on, table,
+              "acts on a cantilever or a bridge, not on " + kind +
+                  " (a device takes [effects.electrostatic] and [[effects.combs]])");
+  }
+  if (IsOn(e.electrostatic)) {
+    r.Require(type == AnalysisType::kStatic || type == AnalysisType::kPullin,
+              "effects.electrostatic",
+              "on " + kind + " it acts in the \"static\" and \"pullin\" analyses");
+    r.Require(e.combs.empty(), "effects.combs",
+              "a device's comb drives are solved without [effects.electrostatic] (declare one "
+              "transducer or the other)");
+  }
   if (scene.structure.kind == StructureKind::kFrame) CheckNetlist(r, scene);
   // The netlist's geometry (a member of zero length, a node on two bodies, a design parameter
   // the generator cannot build), named at its key in the scene.

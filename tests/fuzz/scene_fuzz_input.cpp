@@ -35,6 +35,9 @@ void ConvertFrame(const Scene& scene) {
     std::abort();
   }
   AssembleFrameLoads(model, MakeFrameLoadCase(scene, structure));
+  if (IsOn(scene.effects.electrostatic)) {
+    MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene), 1.0);
+  }
 }
 
 // Every conversion the CLI makes, and the model it builds: a scene the loader accepts must

@@ -48,7 +48,20 @@ inline void ExpectSameScene(const Scene& a, const Scene& b) {
     EXPECT_EQ(a.effects.stiction->enabled, b.effects.stiction->enabled);
     EXPECT_EQ(a.effects.stiction->adhesion_energy, b.effects.stiction->adhesion_energy);
   }
-  EXPECT_EQ(a.effects.electrostatic.has_value(), b.effects.electrostatic.has_value());
+  ASSERT_EQ(a.effects.electrostatic.has_value(), b.effects.electrostatic.has_value());
+  if (a.effects.electrostatic) {
+    const ElectrostaticEffect &ea = *a.effects.electrostatic, &eb = *b.effects.electrostatic;
+    EXPECT_EQ(ea.enabled, eb.enabled);
+    EXPECT_EQ(ea.voltage, eb.voltage);
+    EXPECT_EQ(ea.fringing, eb.fringing);
+    EXPECT_EQ(ea.electrode_start, eb.electrode_start);
+    EXPECT_EQ(ea.electrode_end, eb.electrode_end);
+    ASSERT_EQ(ea.electrodes.size(), eb.electrodes.size());
+    for (std::size_t i = 0; i < ea.electrodes.size(); ++i) {
+      EXPECT_EQ(ea.electrodes[i].x, eb.electrodes[i].x);
+      EXPECT_EQ(ea.electrodes[i].z, eb.electrodes[i].z);
+    }
+  }
   EXPECT_EQ(a.effects.casimir.has_value(), b.effects.casimir.has_value());
   EXPECT_EQ(a.effects.van_der_waals.has_value(), b.effects.van_der_waals.has_value());
   ASSERT_EQ(a.effects.damping.has_value(), b.effects.damping.has_value());

@@ -82,7 +82,7 @@ TEST(FrameStretchingTest, ANetlistBridgeStretchesAsTheBeamAndTheExactBridge) {
   FrameStretchingForce stretching(model);
   FrameLoadCase loads;
   loads.distributed = Eigen::Vector3d(0, q, 0);
-  const FrameStaticSolution frame = SolveFrameNonlinearStatic(model, stretching, loads);
+  const FrameStaticSolution frame = SolveFrameNonlinearStatic(model, {&stretching}, loads);
   ASSERT_EQ(frame.status, Status::kOk);
 
   const double ea = test::Silicon().young_modulus * test::ReferenceSection().Area();
@@ -135,7 +135,7 @@ TEST(FrameStretchingTest, AShuttleBetweenTwoBeamsStiffensAndAFoldedFlexureDoesNo
     FrameStretchingForce stretching(model);
     FrameLoadCase pull;
     pull.points.push_back({-1, body, {force, 0, 0}, {0, 0, 0}});
-    const FrameStaticSolution solution = SolveFrameNonlinearStatic(model, stretching, pull);
+    const FrameStaticSolution solution = SolveFrameNonlinearStatic(model, {&stretching}, pull);
     EXPECT_EQ(solution.status, Status::kOk);
     return solution.bodies[body][0];
   };

@@ -9,11 +9,12 @@
 
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/beam/element_loads.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
+#include "cosmems/structure/frame_element_force.hpp"
 #include "cosmems/structure/frame_model.hpp"
-#include "cosmems/structure/frame_stretching_force.hpp"
 
 namespace cosmems {
 
@@ -94,15 +95,15 @@ inline Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLo
 
 namespace internal {
 
-// Each element's end forces in its own axes, K u + r(u) - f_q (internal units; r the
-// stretching's, when given): the reactions, the axial forces and the stresses all come from
-// them.
+// Each element's end forces in its own axes, K u + r(u) - f_q (internal units; r the shares of
+// the nonlinear forces given: stretching, a gap pressure): the reactions, the axial forces and
+// the stresses all come from them.
 inline FrameModel::ElementVector ElementEndForces(
     const FrameModel& model, const Eigen::VectorXd& d, int e, const Eigen::Vector3d& distributed,
-    const FrameStretchingForce* stretching = nullptr) {
+    const std::vector<FrameElementForce*>& forces = {}) {
   const FrameModel::ElementVector u = model.LocalDisplacement(d, e);
   FrameModel::ElementVector s = model.LocalStiffness(e) * u;
-  if (stretching != nullptr) s += stretching->LocalForce(d, e);
+  for (const FrameElementForce* force : forces) s += force->LocalForce(d, e);
   if (!distributed.isZero(0.0)) {
     const Eigen::Vector3d q =
         model.mesh().elements[e].axes * distributed / model.units().ForcePerLength();
@@ -132,9 +133,10 @@ namespace internal {
 
 // The motions of every node and body, the largest deflection toward the substrate, the members'
 // largest stress and axial force and the reactions of the solved displacement out.displacement
-// (with the stretching's end forces, when given).
+// (with the nonlinear forces' shares of the end forces).
 inline void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
-                               const FrameStretchingForce* stretching, FrameStaticSolution& out) {
+                               const std::vector<FrameElementForce*>& forces,
+                               FrameStaticSolution& out) {
   const UnitSystem& units = model.units();
   const Eigen::VectorXd& d = out.displacement;
   auto si = [&](FrameModel::Motion m) {
@@ -164,8 +166,7 @@ inline void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loa
   // Element end forces: stresses, axial forces, and what the anchored nodes receive.
   std::vector<FrameModel::Motion> resisted(s.nodes.size(), FrameModel::Motion::Zero());
   for (int e = 0; e < model.ElementCount(); ++e) {
-    const FrameModel::ElementVector end =
-        ElementEndForces(model, d, e, loads.distributed, stretching);
+    const FrameModel::ElementVector end = ElementEndForces(model, d, e, loads.distributed, forces);
     const ElementProperties& p = model.elements()[e].properties();
     for (int k = 0; k < 2; ++k) {
       const double axial = (k == 0 ? -end[0] : end[6]) * units.force;
@@ -211,25 +212,33 @@ inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const Frame
   FrameStaticSolution out;
   out.status = SolveFrameDisplacement(model, AssembleFrameLoads(model, loads), out.displacement,
                                       solver_kind);
-  if (out.status == Status::kOk) internal::RecoverFrameStatic(model, loads, nullptr, out);
+  if (out.status == Status::kOk) internal::RecoverFrameStatic(model, loads, {}, out);
   return out;
 }
 
-/// Statics of a frame whose members stretch as they bend, K u + r(u) = f (NonlinearStaticSolve:
-/// adaptive load steps, Newton with the consistent tangent), with the same results as
-/// SolveFrameStatic; the end forces, reactions and axial forces carry the members' tension. A
-/// load the solve cannot carry whole is Status::kNotConverged, with no results but the status.
+/// Statics of a frame under nonlinear forces, K u + r(u) + lambda r_s(u) = lambda f (Nonlinear-
+/// StaticSolve: adaptive load steps, Newton with the consistent tangent), r the sum of `forces`
+/// (members that stretch as they bend) and r_s the optional `ramped` force, which grows with the
+/// loads (a pressure across the gap: V^2 rises from 0 with them). The results are
+/// SolveFrameStatic's; the end forces, reactions and axial forces carry each force's share. A
+/// state the solve cannot reach is Status::kNotConverged, with no results but the status (a
+/// device pulled past its pull-in voltage has none).
 inline FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
-                                                     FrameStretchingForce& stretching,
+                                                     const std::vector<FrameElementForce*>& forces,
                                                      const FrameLoadCase& loads,
+                                                     FrameElementForce* ramped = nullptr,
                                                      const NonlinearStaticOptions& options = {}) {
   FrameStaticSolution out;
-  NonlinearStaticSolve solve(model.Stiffness(), stretching, options, nullptr);
+  ForceSum sum;
+  for (FrameElementForce* force : forces) sum.Add(*force);
+  NonlinearStaticSolve solve(model.Stiffness(), sum, options, ramped);
   const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
   out.status = solution.status;
   if (out.status != Status::kOk) return out;
   out.displacement = solution.displacement;
-  internal::RecoverFrameStatic(model, loads, &stretching, out);
+  std::vector<FrameElementForce*> all = forces;
+  if (ramped != nullptr) all.push_back(ramped);
+  internal::RecoverFrameStatic(model, loads, all, out);
   return out;
 }
 

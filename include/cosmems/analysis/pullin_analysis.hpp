@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/fold_search.hpp"
@@ -38,27 +39,28 @@ struct PullInResult {
   int iterations = 0;
 };
 
-/// The equilibrium path of a beam pulled by a scaled gap pressure under displacement control: at
-/// travel s (a fraction of the gap) the deflection at control_x is -s gap, and the pressure's
-/// scale lambda is the unknown that holds it there:
+/// The equilibrium path of a structure (a BeamModel or a FrameModel) pulled by a scaled force
+/// under displacement control: at travel s (a fraction of the gap) the deflection at the control
+/// point is -s gap, and the force's scale lambda is the unknown that holds it there:
 ///   K d + r(d) + lambda r_1(d) = 0,   e^T d = -s gap,
-/// r_1 the force of `pressure` (the electrostatic one at 1 V, so that lambda = V^2; or a surface
-/// force, lambda its multiple) and r any other nonlinear force (stretching, surface forces). Newton
-/// on the bordered system, solved with two solves of the stiffness part J = K + dr/dd + lambda
-/// dr_1/dd: J a = -R, J b = r_1, d lambda = (e^T a + c) / e^T b. The bordered matrix stays regular
-/// through the fold where J turns singular, and J is positive definite on the stable side, where
-/// FindFold keeps the solves. d lambda / ds = gap / e^T b.
-template <int Dim, typename Pressure>
+/// r_1 the `pulling` force (a gap pressure: the electrostatic one at 1 V, so that lambda = V^2; or
+/// a surface force, lambda its multiple) and r any other nonlinear force (stretching, surface
+/// forces). Newton on the bordered system, solved with two solves of the stiffness part J = K +
+/// dr/dd + lambda dr_1/dd: J a = -R, J b = r_1, d lambda = (e^T a + c) / e^T b. The bordered matrix
+/// stays regular through the fold where J turns singular, and J is positive definite on the stable
+/// side, where FindFold keeps the solves. d lambda / ds = gap / e^T b.
+template <class Model, class Pulling>
 class FoldPath : private PlainNewtonScheme {
  public:
-  FoldPath(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
-           NonlinearForce* other)
+  /// `control`: the deflection [m] held at -s gap; `gap` [m] scales the travel s.
+  FoldPath(const Model& model, Pulling pulling, OutputPoint control, double gap,
+           const NewtonOptions& newton, NonlinearForce* other)
       : model_(model),
-        pulling_(model, pressure, options.electrode),
+        pulling_(std::move(pulling)),
         other_(other),
-        control_(OutputPoint::DeflectionAt(model, options.control_x)),
-        gap_(options.electrode.gap),
-        newton_(options.newton) {
+        control_(std::move(control)),
+        gap_(gap),
+        newton_(newton) {
     const int n = model.FreeDofCount();
     const int w = model.Stiffness().bandwidth();
     other_tangent_ = ForceTangent(n, w);
@@ -90,6 +92,8 @@ class FoldPath : private PlainNewtonScheme {
   }
 
   const Eigen::VectorXd& accepted() const { return accepted_; }
+  /// The scale lambda that holds the accepted state.
+  double accepted_load() const { return accepted_lambda_; }
   /// What the solves along the path cost.
   const NewtonStats& stats() const { return newton_.stats(); }
 
@@ -158,8 +162,8 @@ class FoldPath : private PlainNewtonScheme {
     return Status::kOk;
   }
 
-  const BeamModel<Dim>& model_;
-  GapForce<Dim, Pressure> pulling_;
+  const Model& model_;
+  Pulling pulling_;
   NonlinearForce* other_;
   OutputPoint control_;
   double gap_;  ///< m, as the control point measures deflections
@@ -173,14 +177,12 @@ class FoldPath : private PlainNewtonScheme {
   double target_ = 0.0, c_ = 0.0, eb_ = 0.0;  ///< the travel held, its residual, e^T b
 };
 
-/// The fold of a FoldPath: its pressure's largest scale before the beam snaps onto the substrate,
-/// with `voltage_v` the square root of that scale (the voltage for the electrostatic pressure at
-/// 1 V). `options.fringing` is the electrostatic pressure's business and unused here.
-template <int Dim, typename Pressure>
-PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
-                       NonlinearForce* other = nullptr) {
-  FoldPath<Dim, Pressure> path(model, pressure, options, other);
-  const FoldPoint fold = FindFold(path, options.fold);
+/// The end of a FoldPath's stable part (FindFold): its scale at the fold, with `voltage_v` the
+/// square root of that scale (the voltage for the electrostatic pressure at 1 V), the travel [m]
+/// at the control point and the last stable state; displacement_m is the caller's to fill.
+template <class Path>
+PullInResult TraceFold(Path& path, const FoldOptions& options, double gap) {
+  const FoldPoint fold = FindFold(path, options);
   PullInResult out;
   out.scale = fold.load;
   out.status = fold.status;
@@ -190,8 +192,23 @@ PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const Pul
   out.displacement = path.accepted();
   if (fold.status != Status::kOk) return out;
   out.voltage_v = std::sqrt(fold.load);
-  out.travel_m = fold.travel * options.electrode.gap;
-  out.displacement_m = BeamField<Dim>(model, out.displacement).MaxDeflectionTowardSubstrate();
+  out.travel_m = fold.travel * gap;
+  return out;
+}
+
+/// The fold of a beam pulled by a gap pressure over options.electrode, the travel held at
+/// options.control_x. `options.fringing` is the electrostatic pressure's business and unused here.
+template <int Dim, typename Pressure>
+PullInResult SolveFold(const BeamModel<Dim>& model, Pressure pressure, const PullInOptions& options,
+                       NonlinearForce* other = nullptr) {
+  FoldPath<BeamModel<Dim>, GapForce<Dim, Pressure>> path(
+      model, GapForce<Dim, Pressure>(model, pressure, options.electrode),
+      OutputPoint::DeflectionAt(model, options.control_x), options.electrode.gap, options.newton,
+      other);
+  PullInResult out = TraceFold(path, options.fold, options.electrode.gap);
+  if (out.status == Status::kOk) {
+    out.displacement_m = BeamField<Dim>(model, out.displacement).MaxDeflectionTowardSubstrate();
+  }
   return out;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "cosmems/analysis/comb_drive_analysis.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
@@ -25,6 +26,10 @@ FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& 
 
 /// The scene's [[effects.combs]] on their bodies, each as thick as its body.
 std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescription& structure);
+
+/// The scene's electrodes under a device (structure.gap; effects.electrostatic's electrodes, or
+/// one under all of it, and fringing) and a pull-in's voltage bound (analysis.voltage_max).
+FramePullInOptions MakeFramePullInOptions(const Scene& scene);
 
 /// The points a device's transient records: the nodes and bodies of analysis.record (a name that
 /// is a node and a body is the node), then every other body's centre. The first is watched.

@@ -26,14 +26,22 @@ struct StictionEffect {
   std::optional<double> adhesion_energy;  ///< work of adhesion [J/m^2], >= 0
 };
 
+/// An entry of effects.electrostatic.electrodes: a rectangle on the substrate under a device.
+struct SceneElectrode {
+  std::array<double, 2> x = {0.0, 0.0};  ///< m, from x[0] to x[1]
+  std::array<double, 2> z = {0.0, 0.0};  ///< m, from z[0] to z[1]
+};
+
 /// [effects.electrostatic]: a parallel-plate electrode on the substrate, under the whole beam
-/// unless electrode_start / electrode_end are given.
+/// unless electrode_start / electrode_end are given; under a device, the rectangles of
+/// `electrodes`, or one under all of it.
 struct ElectrostaticEffect {
   bool enabled = true;
-  std::optional<double> voltage;          ///< V
-  bool fringing = false;                  ///< add the fringing-field correction
-  std::optional<double> electrode_start;  ///< m from the first support, in [0, length]
-  std::optional<double> electrode_end;    ///< m from the first support, in [0, length]
+  std::optional<double> voltage;           ///< V
+  bool fringing = false;                   ///< add the fringing-field correction
+  std::optional<double> electrode_start;   ///< m from the first support, in [0, length]
+  std::optional<double> electrode_end;     ///< m from the first support, in [0, length]
+  std::vector<SceneElectrode> electrodes;  ///< a device's; empty: one under all of it
 };
 
 /// [effects.casimir]: the ideal parallel-plate Casimir pressure.

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cosmems/beam/nonlinear_force.hpp"
+#include "cosmems/structure/frame_element_force.hpp"
 #include "cosmems/structure/frame_model.hpp"
 
 namespace cosmems {
@@ -24,7 +24,7 @@ namespace cosmems {
 /// w'^2), the beam's StretchingForce; a member free to slide axially (a folded flexure's beams
 /// meet a truss that gives way) builds little. The model must be numbered for these couplings
 /// (FrameCouplings::kStretching).
-class FrameStretchingForce final : public NonlinearForce {
+class FrameStretchingForce final : public FrameElementForce {
  public:
   /// Throws std::invalid_argument unless `model` was built with FrameCouplings::kStretching; it
   /// must outlive the force.
@@ -72,7 +72,7 @@ class FrameStretchingForce final : public NonlinearForce {
 
   /// An element's stretching force in its own axes (internal units), the nonlinear part of its
   /// end forces: what the linear elements' K u leaves out.
-  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const {
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const override {
     return Force(Element(d, e), stiffness_[e]);
   }
 

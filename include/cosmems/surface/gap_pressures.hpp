@@ -35,6 +35,11 @@ struct ElectrostaticPressure {
     const double c = 0.5 * kVacuumPermittivity * voltage * voltage;
     return fringing ? -2.0 * c / (d * d * d) - 0.65 * c / (width * d * d) : -2.0 * c / (d * d * d);
   }
+  /// The capacitance per unit area [F/m^2] at gap d, with Palmer's correction when `fringing`
+  /// (independent of the voltage).
+  double CapacitancePerArea(double d) const {
+    return kVacuumPermittivity / d * (fringing ? 1.0 + 0.65 * d / width : 1.0);
+  }
 };
 
 /// The Casimir pressure between ideal conductors, pi^2 hbar c / (240 d^4).

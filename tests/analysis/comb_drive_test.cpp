@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "device_checks.hpp"
+#include "structure/device_checks.hpp"
 
 namespace cosmems {
 namespace {

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/structure/structure_description.hpp"
+
+namespace cosmems::internal {
+
+// A device's static state as every report of one shows it (doc/cli.md, static, frames): the
+// motions of its nodes and bodies, the reactions at its anchors and the members' largest
+// deflection, stress and axial force.
+
+/// max_deflection, max_stress_pa, axial_force_n, nodes, bodies, reactions.
+void AddFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
+                      nlohmann::ordered_json& json);
+
+/// The same as text, one line each.
+void PrintFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
+                        std::ostream& out);
+
+/// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body;
+/// reactions.csv: node, fx_n, fy_n, fz_n, mx_nm, my_nm, mz_nm at every anchored node.
+void WriteFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
+                        const std::filesystem::path& directory);
+
+}  // namespace cosmems::internal
