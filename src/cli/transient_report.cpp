@@ -37,10 +37,21 @@ TransientResult RunDevice(const Scene& scene, const TransientOptions& options, i
   const FrameModel model(structure, MakeFrameCouplings(scene));
   dofs = model.FreeDofCount();
   const std::vector<FrameRecordPoint> record = MakeFrameRecord(scene, structure);
+  // The nonlinear forces the scene declares (only these are evaluated) and what its voltages
+  // drive: the combs' forces as loads, the electrodes' pressure scaled by V(t)^2.
+  ForceSum forces;
   std::optional<FrameStretchingForce> stretching;
-  if (scene.model.theory == Theory::kStretching) stretching.emplace(model);
+  if (scene.model.theory == Theory::kStretching) forces.Add(stretching.emplace(model));
+  FrameDrives drives = CombDriveLoads(model, MakeCombDrives(scene, structure));
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrodes;
+  if (IsOn(scene.effects.electrostatic)) {
+    forces.Add(
+        electrodes.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene), 1.0)));
+    drives.electrodes = &*electrodes;
+    drives.electrode_voltage = MakeElectrodeDrive(scene);
+  }
   FrameTransientResult out = RunFrameTransient(model, MakeFrameLoadCase(scene, structure), options,
-                                               record, stretching ? &*stretching : nullptr);
+                                               record, forces.Empty() ? nullptr : &forces, drives);
   for (const FrameRecordPoint& point : record) {
     results.recorded.push_back(point.node >= 0 ? structure.nodes[point.node].name
                                                : structure.bodies[point.body].name);

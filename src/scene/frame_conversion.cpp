@@ -101,6 +101,8 @@ std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescrip
     comb.direction = c.direction;
     comb.thickness = structure.bodies.at(static_cast<std::size_t>(comb.body)).size.y();
     comb.voltage = c.voltage;
+    comb.ac_voltage = c.ac_voltage;
+    comb.frequency_hz = c.frequency.value_or(0.0);
     out.push_back(comb);
   }
   return out;
@@ -117,6 +119,11 @@ FramePullInOptions MakeFramePullInOptions(const Scene& scene) {
   out.fringing = e.fringing;
   if (scene.analysis.voltage_max) out.fold.max_load = std::pow(*scene.analysis.voltage_max, 2);
   return out;
+}
+
+VoltageDrive MakeElectrodeDrive(const Scene& scene) {
+  const ElectrostaticEffect& e = *scene.effects.electrostatic;
+  return {e.voltage.value_or(0.0), e.ac_voltage, e.frequency.value_or(0.0)};
 }
 
 std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,

@@ -300,6 +300,16 @@ void VisitStiction(V& v, StictionEffect& s) {
            "the work of adhesion Gamma; stiction implies contact");
 }
 
+// A transducer's alternating drive in a transient, V(t) = voltage + ac_voltage sin(2 pi f t).
+template <class V>
+void VisitAlternatingVoltage(V& v, double& ac_voltage, std::optional<double>& frequency) {
+  v.Number("ac_voltage", ac_voltage, AnySign(kVoltage),
+           "in a transient, the amplitude of the alternating part: V(t) = voltage + ac_voltage "
+           "sin(2 pi frequency t)");
+  v.Number("frequency", frequency, Positive(kFrequency), "required with ac_voltage",
+           "of the alternating part");
+}
+
 template <class V>
 void VisitElectrode(V& v, SceneElectrode& e) {
   v.Interval("x", e.x, kCoordinate, "the rectangle's extent along x, [from, to]");
@@ -320,6 +330,7 @@ void VisitElectrostatic(V& v, ElectrostaticEffect& e, StructureKind kind) {
       "electrodes", e.electrodes, [](auto& c, SceneElectrode& r) { VisitElectrode(c, r); },
       "rectangles on the substrate, e.g. [ { x = [0.0, 40e-6], z = [-30e-6, 30e-6] } ]; none: one "
       "under all of the device");
+  VisitAlternatingVoltage(v, e.ac_voltage, e.frequency);
 }
 
 template <class V>
@@ -361,6 +372,7 @@ void VisitComb(V& v, SceneComb& c) {
   v.Vector("direction", c.direction, kDirection,
            "the direction the comb engages in, in the substrate plane (y = 0)");
   v.Required("voltage", c.voltage, AnySign(kVoltage), "across the fingers");
+  VisitAlternatingVoltage(v, c.ac_voltage, c.frequency);
 }
 
 // The keys of [effects] itself (its tables are read one by one).

@@ -352,6 +352,16 @@ void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
+// An alternating voltage drives a transient, at a frequency.
+void CheckAlternatingVoltage(const TomlFieldReader& r, const std::string& table, double ac_voltage,
+                             const std::optional<double>& frequency, AnalysisType type) {
+  if (ac_voltage == 0.0) return;
+  r.Require(type == AnalysisType::kTransient, table + ".ac_voltage",
+            "an alternating voltage drives a \"transient\" analysis");
+  r.Require(frequency.has_value(), table + ".frequency",
+            "needs the alternating voltage's frequency (Hz, > 0)");
+}
+
 // A frame's netlist names nodes, bodies and materials that must exist.
 void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   const SceneStructure& s = scene.structure;
@@ -430,12 +440,14 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                   " (a device takes [effects.electrostatic] and [[effects.combs]])");
   }
   if (IsOn(e.electrostatic)) {
-    r.Require(type == AnalysisType::kStatic || type == AnalysisType::kPullin,
+    r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling,
               "effects.electrostatic",
-              "on " + kind + " it acts in the \"static\" and \"pullin\" analyses");
-    r.Require(e.combs.empty(), "effects.combs",
-              "a device's comb drives are solved without [effects.electrostatic] (declare one "
-              "transducer or the other)");
+              "on " + kind + " it acts in the \"static\", \"pullin\" and \"transient\" analyses");
+    r.Require(e.combs.empty() || type == AnalysisType::kTransient, "effects.combs",
+              "a device's comb drives are solved without [effects.electrostatic] outside a "
+              "transient (declare one transducer or the other)");
+    CheckAlternatingVoltage(r, "effects.electrostatic", e.electrostatic->ac_voltage,
+                            e.electrostatic->frequency, type);
   }
   if (scene.structure.kind == StructureKind::kFrame) CheckNetlist(r, scene);
   // The netlist's geometry (a member of zero length, a node on two bodies, a design parameter
@@ -461,11 +473,12 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   for (std::size_t i = 0; i < scene.effects.combs.size(); ++i) {
     const SceneComb& comb = scene.effects.combs[i];
     const std::string entry = "effects.combs[" + std::to_string(i) + "]";
-    r.Require(type == AnalysisType::kStatic, entry,
+    r.Require(type == AnalysisType::kStatic || type == AnalysisType::kTransient, entry,
               "a comb drive acts in the \"static\" analysis (its force, capacitance and side "
-              "instability)");
-    r.Require(scene.model.theory == Theory::kLinear, entry,
-              "a comb drive takes model.theory = \"linear\"");
+              "instability) and drives a \"transient\"");
+    r.Require(type == AnalysisType::kTransient || scene.model.theory == Theory::kLinear, entry,
+              "a comb drive's statics take model.theory = \"linear\"");
+    CheckAlternatingVoltage(r, entry, comb.ac_voltage, comb.frequency, type);
     r.Require(structure.FindBody(comb.body) >= 0, entry + ".body", "no body \"" + comb.body + "\"");
     r.Require(comb.direction.y() == 0.0 && !comb.direction.isZero(0.0), entry + ".direction",
               "must be a non-zero direction in the substrate plane (y = 0)");

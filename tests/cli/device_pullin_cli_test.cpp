@@ -71,6 +71,24 @@ TEST(DevicePullInCliTest, BelowPullInThePlateRestsWhereItsSpringsHoldIt) {
   ExpectContains(above["warnings"].dump(), "pulls in below it");
 }
 
+// A transient under the electrode: 10 V switched on at t = 0 swings the plate past its rest
+// (a suddenly applied load overshoots) and no further than twice it (damping takes some), and
+// the plate is what the run watches.
+TEST(DevicePullInCliTest, AVoltageSwitchedOnSwingsThePlate) {
+  const nlohmann::json statics =
+      RunJson({"serpentine-pullin", "--set", "analysis.type=\"static\""});
+  const double rest = -statics["bodies"]["plate"]["displacement"][1].get<double>();
+  const nlohmann::json json =
+      RunJson({"serpentine-pullin", "--set", "analysis.type=\"transient\"", "--set",
+               "analysis.duration=1e-4", "--set", "analysis.time_step=2e-7", "--set",
+               "effects.damping.quality_factor=5.0"});
+  ASSERT_EQ(json["status"], "ok");
+  EXPECT_EQ(json["watched"]["point"], "plate");
+  EXPECT_EQ(json["watched"]["component"], "uy");
+  EXPECT_GT(json["displacement_max"].get<double>(), rest);
+  EXPECT_LT(json["displacement_max"].get<double>(), 2.0 * rest);
+}
+
 TEST(DevicePullInCliTest, ElectrodesWhereTheyCannotActAreRefused) {
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set",
                                "effects.electrostatic.electrodes=[{x=[-50e-6,50e-6],z=[-50e-6,"
@@ -93,6 +111,9 @@ TEST(DevicePullInCliTest, ElectrodesWhereTheyCannotActAreRefused) {
                  "effects.electrostatic");
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "structure.gap=false"}),
                  "structure.gap");
+  ExpectContains(
+      InvalidInput({"run", "serpentine-pullin", "--set", "effects.electrostatic.ac_voltage=1.0"}),
+      "effects.electrostatic.ac_voltage");
 }
 
 }  // namespace

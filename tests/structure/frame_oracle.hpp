@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <stdexcept>
 #include <vector>
@@ -277,6 +278,28 @@ inline Eigen::VectorXd Frequencies(const Frame& frame, int count) {
   return hz;
 }
 
+namespace detail {
+// Every mode of the scaled frame, M_s x_i = mu_i K_s x_i with x_i^T K_s x_i = 1 (mu ascending:
+// the lowest modes last), the loads' share x_i^T g of each, and the mu below which a mode is
+// massless (round-off of the largest).
+struct Modes {
+  Reduced reduced;
+  Eigen::VectorXd mu, share;
+  Eigen::MatrixXd x;
+  double tiny = 0.0;
+
+  Modes(const Frame& frame, const Eigen::VectorXd& loads) : reduced(frame) {
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
+        reduced.ScaledMass(), reduced.ks, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
+    mu = solver.eigenvalues();
+    x = solver.eigenvectors();
+    share = x.transpose() * reduced.ScaledLoads(loads);
+    tiny = static_cast<double>(mu.size()) * std::numeric_limits<double>::epsilon() *
+           std::abs(mu[mu.size() - 1]);
+  }
+};
+}  // namespace detail
+
 /// The undamped response (reported dofs, one row per time) to `loads` (SolveStatic's layout)
 /// applied as a step at t = 0 to the frame at rest, by superposing all its modes: in the scaled
 /// coordinates y (K_s y + M_s y'' = g), with M_s x_i = mu_i K_s x_i and x_i^T K_s x_i = 1, each
@@ -285,14 +308,13 @@ inline Eigen::VectorXd Frequencies(const Frame& frame, int count) {
 /// (a_i = x_i^T g), the static correction of a truncated modal model.
 inline Eigen::MatrixXd StepResponse(const Frame& frame, const Eigen::VectorXd& loads,
                                     const std::vector<double>& times, int dynamic = 0) {
-  const detail::Reduced reduced(frame);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> solver(
-      reduced.ScaledMass(), reduced.ks, Eigen::ComputeEigenvectors | Eigen::Ax_lBx);
-  const Eigen::VectorXd& mu = solver.eigenvalues();  // ascending: the lowest modes last
-  const Eigen::MatrixXd& x = solver.eigenvectors();
-  const Eigen::VectorXd share = x.transpose() * reduced.ScaledLoads(loads);
+  const detail::Modes modes(frame, loads);
+  const detail::Reduced& reduced = modes.reduced;
+  const Eigen::VectorXd& mu = modes.mu;
+  const Eigen::MatrixXd& x = modes.x;
+  const Eigen::VectorXd& share = modes.share;
   const int n = static_cast<int>(mu.size());
-  const double tiny = n * std::numeric_limits<double>::epsilon() * std::abs(mu[n - 1]);
+  const double tiny = modes.tiny;
   Eigen::MatrixXd out(static_cast<Eigen::Index>(times.size()), reduced.model.reported);
   for (std::size_t t = 0; t < times.size(); ++t) {
     Eigen::VectorXd a = share;
@@ -302,6 +324,44 @@ inline Eigen::MatrixXd StepResponse(const Frame& frame, const Eigen::VectorXd& l
     }
     out.row(static_cast<Eigen::Index>(t)) = reduced.Reported(x * a);
   }
+  return out;
+}
+
+/// The steady response to `loads` (SolveStatic's layout) times sin(omega t), every mode damped
+/// at the ratio `zeta`, by superposing all the modes: each modal coordinate (x_i^T K_s x_i = 1,
+/// mass mu_i, damping c_i = 2 zeta sqrt(mu_i)) answers a_i = (x_i^T g) / (1 - mu_i omega^2 +
+/// i omega c_i). With `dynamic` > 0 only the lowest `dynamic` modes respond dynamically, the
+/// others statically (undamped, in phase with the load: a truncated modal model's static
+/// correction). `amplitude`: each reported dof's; `dissipated`: the damping's work over a cycle,
+/// pi omega sum c_i |a_i|^2 [J], what the load puts in.
+struct HarmonicResponse {
+  Eigen::VectorXd amplitude;
+  double dissipated = 0.0;
+};
+
+inline HarmonicResponse SteadyHarmonic(const Frame& frame, const Eigen::VectorXd& loads,
+                                       double omega, double zeta, int dynamic = 0) {
+  constexpr double kPi = 3.14159265358979323846;
+  const detail::Modes modes(frame, loads);
+  const detail::Reduced& reduced = modes.reduced;
+  const Eigen::VectorXd& mu = modes.mu;
+  const Eigen::MatrixXd& x = modes.x;
+  const Eigen::VectorXd& share = modes.share;
+  const int n = static_cast<int>(mu.size());
+  const double tiny = modes.tiny;
+  Eigen::VectorXd re = share, im = Eigen::VectorXd::Zero(n);
+  HarmonicResponse out;
+  for (int i = 0; i < n; ++i) {
+    if (!(mu[i] > tiny && (dynamic <= 0 || i >= n - dynamic))) continue;
+    const double c = 2.0 * zeta * std::sqrt(mu[i]);
+    const std::complex<double> a =
+        share[i] / std::complex<double>(1.0 - mu[i] * omega * omega, omega * c);
+    re[i] = a.real();
+    im[i] = a.imag();
+    out.dissipated += kPi * omega * c * std::norm(a);
+  }
+  const Eigen::VectorXd u_re = reduced.Reported(x * re), u_im = reduced.Reported(x * im);
+  out.amplitude = (u_re.array().square() + u_im.array().square()).sqrt();
   return out;
 }
 

@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
+#include "device_checks.hpp"
 #include "test_beams.hpp"
 #include "test_frames.hpp"
 
@@ -90,6 +92,95 @@ TEST(FrameTransientTest, ModalPropagationIsTheTruncatedExpansionWithItsStaticCor
   // period: 2e-3).
   const double statics = kForce / FoldedFlexureDesign{}.Stiffness();
   EXPECT_NEAR(run.run.max_abs_output, 2 * statics, 0.02 * 2 * statics);
+}
+
+// A comb of 20 fingers on the flexure's shuttle, engaging along x.
+CombDrive ShuttleComb(const Flexure& flexure, double dc, double ac = 0.0, double hz = 0.0) {
+  CombDrive comb;
+  comb.body = flexure.shuttle;
+  comb.fingers = 20;
+  comb.gap = 2e-6;
+  comb.overlap = 10e-6;
+  comb.thickness = flexure.structure.bodies[flexure.shuttle].size.y();
+  comb.voltage = dc;
+  comb.ac_voltage = ac;
+  comb.frequency_hz = hz;
+  return comb;
+}
+
+// A comb at a constant voltage is a step load N eps0 t V^2 / g on its body: the run equals the
+// one with that force as the load, to round-off.
+TEST(FrameTransientTest, ACombAtAConstantVoltageDrivesAsItsForceAppliedAtRest) {
+  const Flexure flexure(4);
+  const FrameModel model(flexure.structure);
+  const TransientOptions options = Span(1.5 * flexure.period, flexure.period / 37);
+  CombDrive comb = ShuttleComb(flexure, 0.0);
+  comb.voltage = std::sqrt(kForce / comb.ForcePerVoltSquared());
+  const FrameTransientResult loaded =
+      RunFrameTransient(model, flexure.loads, options, {{-1, flexure.shuttle}});
+  const FrameTransientResult driven = RunFrameTransient(model, {}, options, {{-1, flexure.shuttle}},
+                                                        nullptr, CombDriveLoads(model, {comb}));
+  ASSERT_EQ(driven.run.status, Status::kOk);
+  EXPECT_EQ(driven.watched_component, 0);  // the comb moves the shuttle along x
+  ASSERT_EQ(driven.history.rows(), loaded.history.rows());
+  const double peak = loaded.history.col(0).cwiseAbs().maxCoeff();
+  EXPECT_LT((driven.history - loaded.history).cwiseAbs().maxCoeff(), 1e-12 * peak);
+}
+
+// The shuttle driven at its mode's frequency by V = V_dc + V_ac sin(w t), which pushes at w
+// with 2 N eps0 t V_dc V_ac / g, against the oracle's steady response of every mode (the six
+// lowest damped at the run's ratio 1 / 2Q, the others static, as the run's modal model with its
+// static correction): the shuttle's amplitude at w, and the power balance over a period (the
+// comb's work, the sum of F dx over the run's steps, against the work of the damping).
+// Measured over the last ten of 150 periods, after the start's transient has decayed to
+// exp(-2 pi 150 / 2Q) = 8e-5; the Fourier coefficient over whole periods leaves out the mean
+// force's offset and the 2w push exactly; the load, linear over each of 400 steps a period, errs
+// by (w h)^2 / 12 = 2e-5. 1e-3 asserted for both.
+TEST(FrameTransientTest, ACombDrivenAtResonancePutsInWhatDampingTakesOut) {
+  const Flexure flexure(4);
+  const FrameModel model(flexure.structure);
+  const test::oracle::Frame oracle = test::ToOracle(flexure.structure);
+  // The shuttle's mode along x (the square beams' out-of-plane mode lies just below it).
+  ModalOptions count;
+  count.count = 6;
+  const FrameModalResult modes = SolveFrameModal(model, count);
+  ASSERT_EQ(modes.modal.status, Status::kOk);
+  const double period = 1.0 / modes.modal.modes[test::ModeAlong(modes, 0)].frequency_hz;
+  const double omega = 2 * kPi / period;
+  const double quality = 50.0, dc = 20.0, ac = 1.0;
+  const CombDrive comb = ShuttleComb(flexure, dc, ac, 1.0 / period);
+  constexpr int kPerPeriod = 400, kPeriods = 150, kMeasured = 10;
+  TransientOptions options = Span(kPeriods * period, period / kPerPeriod);
+  options.path = TimePath::kModal;
+  options.modes = 6;
+  options.damping = DampingModel::QualityFactor(quality);
+  options.max_history = kPerPeriod * kPeriods + 10;
+  const FrameTransientResult run = RunFrameTransient(model, {}, options, {{-1, flexure.shuttle}},
+                                                     nullptr, CombDriveLoads(model, {comb}));
+  ASSERT_EQ(run.run.status, Status::kOk);
+  const Eigen::Index last = run.history.rows() - 1, first = last - kPerPeriod * kMeasured;
+  double sine = 0.0, cosine = 0.0, work = 0.0;
+  for (Eigen::Index k = first; k < last; ++k) {
+    const double t = run.run.time_s[static_cast<std::size_t>(k)];
+    const double t1 = run.run.time_s[static_cast<std::size_t>(k) + 1];
+    sine += run.history(k, 0) * std::sin(omega * t);
+    cosine += run.history(k, 0) * std::cos(omega * t);
+    const double force = 0.5 * (comb.Force(comb.Drive().At(t)) + comb.Force(comb.Drive().At(t1)));
+    work += force * (run.history(k + 1, 0) - run.history(k, 0));
+  }
+  const double amplitude = 2.0 * std::hypot(sine, cosine) / static_cast<double>(last - first);
+  Eigen::VectorXd push = Eigen::VectorXd::Zero(flexure.ShuttleUx() + 6);
+  push[flexure.ShuttleUx()] = 2.0 * comb.ForcePerVoltSquared() * dc * ac;
+  const test::oracle::HarmonicResponse steady =
+      test::oracle::SteadyHarmonic(oracle, push, omega, 0.5 / quality, 6);
+  const double expected = steady.amplitude[flexure.ShuttleUx()];
+  std::printf(
+      "comb at resonance: amplitude %.6e m against %.6e m (%.1e), work per period %.6e J "
+      "against %.6e J (%.1e)\n",
+      amplitude, expected, std::abs(amplitude / expected - 1.0), work / kMeasured,
+      steady.dissipated, std::abs(work / kMeasured / steady.dissipated - 1.0));
+  EXPECT_NEAR(amplitude, expected, 1e-3 * expected);
+  EXPECT_NEAR(work / kMeasured, steady.dissipated, 1e-3 * steady.dissipated);
 }
 
 TEST(FrameTransientTest, TheNewmarkFamilyFollowsTheExactResponse) {

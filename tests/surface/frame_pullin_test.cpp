@@ -47,6 +47,16 @@ struct PlateOnFourBeams {
     options.electrodes.electrodes = {plate};
     return options;
   }
+  // Where the plate rests at v below pull-in: the root of k x = eps0 A v^2 / 2 (g - x)^2 on the
+  // stable branch, x < g / 3, by bisection.
+  double Rest(double v) const {
+    const auto excess = [&](double x) {
+      return k * x - kVacuumPermittivity * area * v * v / (2.0 * std::pow(kPlateGap - x, 2));
+    };
+    double lo = 0.0, hi = kPlateGap / 3.0;
+    for (int i = 0; i < 200; ++i) ((excess(0.5 * (lo + hi)) < 0.0) ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
+  }
   double PullInVoltage() const {
     return std::sqrt(8.0 * k * std::pow(kPlateGap, 3) / (27.0 * kVacuumPermittivity * area));
   }
@@ -83,9 +93,8 @@ TEST(FramePullInTest, PlateOnFourBeamsPullsInAtTheParallelPlateVoltage) {
   EXPECT_NEAR(lift, device.k * x, 1e-8 * device.k * x);
 }
 
-// Below pull-in the plate rests where k x = eps0 A V^2 / 2 (g - x)^2, the root on the stable
-// branch found here by bisection; the static solve ramps the voltage with the loads. Newton's
-// relative residual leaves ~1e-10.
+// Below pull-in the plate rests where k x = eps0 A V^2 / 2 (g - x)^2 (Rest); the static solve
+// ramps the voltage with the loads. Newton's relative residual leaves ~1e-10.
 TEST(FramePullInTest, PlateBelowPullInRestsWhereTheSpringHoldsThePressure) {
   const PlateOnFourBeams device;
   const FrameModel model(device.structure);
@@ -94,13 +103,7 @@ TEST(FramePullInTest, PlateBelowPullInRestsWhereTheSpringHoldsThePressure) {
       MakeFrameElectrostaticForce(model, device.Options(), v);
   const FrameStaticSolution s = SolveFrameNonlinearStatic(model, {}, {}, &pressure);
   ASSERT_EQ(s.status, Status::kOk);
-  const auto excess = [&](double x) {
-    return device.k * x -
-           kVacuumPermittivity * device.area * v * v / (2.0 * std::pow(kPlateGap - x, 2));
-  };
-  double lo = 0.0, hi = kPlateGap / 3.0;
-  for (int i = 0; i < 200; ++i) ((excess(0.5 * (lo + hi)) < 0.0) ? lo : hi) = 0.5 * (lo + hi);
-  const double x = 0.5 * (lo + hi);
+  const double x = device.Rest(v);
   EXPECT_NEAR(-s.bodies[0][1], x, 1e-8 * x);
   double lift = 0.0;
   for (const FrameReaction& r : s.reactions) lift += r.force.y();
@@ -109,6 +112,35 @@ TEST(FramePullInTest, PlateBelowPullInRestsWhereTheSpringHoldsThePressure) {
   const double integrated = pressure.Integrate(
       s.displacement, [](const auto& p, double gap) { return p.CapacitancePerArea(gap); });
   EXPECT_NEAR(integrated, c, 1e-8 * c);
+}
+
+// A voltage switched on at 0.6 of the pull-in voltage (below the dynamic pull-in of a sudden
+// step, about 0.92 of it) swings the plate down and, damped at Q = 2, leaves it where the
+// springs hold the pressure: after 20 periods the swing has decayed to exp(-20 pi) of itself,
+// so the rest matches the static root to Newton's tolerance (1e-8).
+TEST(FramePullInTest, AStepInVoltageSettlesThePlateWhereItsSpringsHoldIt) {
+  const PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const double v = 0.6 * device.PullInVoltage();
+  FrameGapForce<ElectrostaticPressure> pressure =
+      MakeFrameElectrostaticForce(model, device.Options(), 1.0);
+  FrameDrives drives;
+  drives.electrodes = &pressure;
+  drives.electrode_voltage.dc = v;
+  const double period = 1.0 / SolveModal(model).modes.at(0).frequency_hz;
+  TransientOptions options;
+  options.duration = 20 * period;
+  options.time_step = period / 50;
+  options.damping = DampingModel::QualityFactor(2.0);
+  const FrameTransientResult run =
+      RunFrameTransient(model, {}, options, {{-1, 0}}, &pressure, drives);
+  ASSERT_EQ(run.run.status, Status::kOk);
+  EXPECT_EQ(run.watched_component, 1);
+  const double x = device.Rest(v);
+  EXPECT_NEAR(-run.history(run.history.rows() - 1, 1), x, 1e-8 * x);
+  // The swing overshoots the rest, as a suddenly applied load does, but stays clear of the gap.
+  EXPECT_GT(-run.history.col(1).minCoeff(), x);
+  EXPECT_LT(-run.history.col(1).minCoeff(), kPlateGap / 2.0);
 }
 
 // With no electrodes given, one lies under everything: the plate and the beams' lower faces,

@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "allocation_counter.hpp"
+#include "cosmems/analysis/beam_stepper_factory.hpp"
 #include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/beam/force_tuple.hpp"
+#include "cosmems/structure/serpentine.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/squeeze_film.hpp"
@@ -14,6 +17,7 @@
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/nonlinear_modal_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "cosmems/time/voltage_drive.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -105,6 +109,48 @@ TEST(SurfaceNoAllocationTest, ModalPressStickAndPeelStepsAllocateNothing) {
   const ContactEvents& events = forces.get<0>().events();
   EXPECT_GE(events.stuck, 1);
   EXPECT_GE(events.releases, 1);
+}
+
+// A device's steps under an alternating electrode voltage allocate nothing: the serpentine plate
+// over its electrode, its pressure rescaled to V(t)^2 before every step (FrameGapForce), Newton
+// on the frame's band within the counted steps, on both time paths.
+TEST(SurfaceNoAllocationTest, ADeviceDrivenByAnAlternatingVoltageStepsWithoutAllocating) {
+  SerpentineDesign design;  // one turn, one element per segment: 54 free dofs
+  design.turns = 1;
+  design.elements = 1;
+  const FrameModel model(Serpentine(design));
+  FrameGapOptions electrodes;
+  electrodes.gap = kGap;
+  electrodes.electrodes = {Electrode{{-50e-6, 50e-6}, {-50e-6, 50e-6}}};
+  const VoltageDrive drive{8.0, 2.0, 1e5};
+  for (const TimePath path : {TimePath::kNewmarkFamily, TimePath::kModal}) {
+    SCOPED_TRACE(path == TimePath::kModal ? "modal" : "newmark");
+    FrameGapForce<ElectrostaticPressure> pressure(model, ElectrostaticPressure{1.0, 0.0, false},
+                                                  electrodes);
+    StepperOptions options;
+    options.path = path;
+    options.time_step = 1e-7;
+    options.modes = 4;
+    const int n = model.FreeDofCount();
+    const BeamStepperSetup setup =
+        MakeBeamStepper(model, options, Eigen::MatrixXd::Zero(n, 1), &pressure);
+    ASSERT_EQ(setup.status, Status::kOk);
+    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n), s = Eigen::VectorXd::Zero(1);
+    pressure.SetScale(drive.SquaredAt(0.0));
+    ASSERT_EQ(setup.stepper->Initialize(zero, zero, s), Status::kOk);
+    int step = 0;
+    Status status = Status::kOk;
+    EXPECT_EQ(test::AllocationsDuring(50,
+                                      [&] {
+                                        ++step;
+                                        pressure.SetScale(drive.SquaredAt(step * 1e-7));
+                                        if (status == Status::kOk) {
+                                          status = setup.stepper->Step(s);
+                                        }
+                                      }),
+              0);
+    EXPECT_EQ(status, Status::kOk);
+  }
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/time/voltage_drive.hpp"
 
 namespace cosmems {
 
@@ -25,7 +26,10 @@ struct CombDrive {
   double overlap = 0.0;  ///< m, the fingers' engagement at rest
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< engagement direction (normalised)
   double thickness = 0.0;  ///< m, the fingers' height: the body's thickness
-  double voltage = 0.0;    ///< V
+  double voltage = 0.0;    ///< V: the constant part (all of it, in statics)
+  /// V(t) = voltage + ac_voltage sin(2 pi frequency_hz t) in a transient
+  double ac_voltage = 0.0;
+  double frequency_hz = 0.0;
 
   /// Throws std::invalid_argument naming the first field out of range.
   void Validate() const {
@@ -36,11 +40,17 @@ struct CombDrive {
     if (!(overlap > 0.0) || !std::isfinite(overlap)) fail("overlap must be positive");
     if (!(thickness > 0.0) || !std::isfinite(thickness)) fail("thickness must be positive");
     if (!std::isfinite(voltage)) fail("voltage must be finite");
+    if (!std::isfinite(ac_voltage)) fail("ac_voltage must be finite");
+    if (!(frequency_hz >= 0.0) || !std::isfinite(frequency_hz)) {
+      fail("frequency must be finite and not negative");
+    }
     if (!direction.allFinite() || std::abs(direction.y()) > 1e-12 * direction.norm() ||
         !(direction.norm() > 0.0)) {
       fail("direction must be a non-zero vector in the substrate plane (y = 0)");
     }
   }
+  /// The voltage in time.
+  VoltageDrive Drive() const { return {voltage, ac_voltage, frequency_hz}; }
   /// The unit engagement direction.
   Eigen::Vector3d Axis() const { return direction.normalized(); }
   /// The unit direction across the fingers, in the plane: y x Axis().

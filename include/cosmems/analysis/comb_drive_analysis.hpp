@@ -8,6 +8,7 @@
 
 #include "cosmems/analysis/comb_drive.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/linalg/spd_solver.hpp"
 #include "cosmems/structure/frame_model.hpp"
 
@@ -127,6 +128,23 @@ inline CombDriveSolution SolveCombDrives(const FrameModel& model, const FrameLoa
   out.side_instability_factor = hi;
   for (int i = 0; i < m; ++i) {
     out.combs[i].side_instability_voltage_v = hi * std::abs(reference(combs[i]));
+  }
+  return out;
+}
+
+/// The comb drives of a frame's transient: each comb's engagement force at 1 V at its body's
+/// centre, a pattern the run scales by the square of the comb's voltage in time (the force does
+/// not depend on the engagement, so the drive is a load).
+inline FrameDrives CombDriveLoads(const FrameModel& model, const std::vector<CombDrive>& combs) {
+  FrameDrives out;
+  out.patterns.resize(model.FreeDofCount(), static_cast<Eigen::Index>(combs.size()));
+  for (std::size_t c = 0; c < combs.size(); ++c) {
+    combs[c].Validate();
+    FrameLoadCase unit;
+    unit.points.push_back(
+        {-1, combs[c].body, combs[c].Force(1.0) * combs[c].Axis(), Eigen::Vector3d::Zero()});
+    out.patterns.col(static_cast<Eigen::Index>(c)) = AssembleFrameLoads(model, unit);
+    out.voltages.push_back(combs[c].Drive());
   }
   return out;
 }

@@ -13,6 +13,9 @@
 #include "cosmems/analysis/transient_result.hpp"
 #include "cosmems/beam/output_point.hpp"
 #include "cosmems/structure/frame_model.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/gap_pressures.hpp"
+#include "cosmems/time/voltage_drive.hpp"
 
 namespace cosmems {
 
@@ -20,6 +23,17 @@ namespace cosmems {
 struct FrameRecordPoint {
   int node = -1;  ///< a description node, or -1
   int body = -1;  ///< a body, when node is -1
+};
+
+/// What voltages drive in a frame's transient, each V(t) of its VoltageDrive: load patterns whose
+/// amplitude is their voltage's square (comb drives, whose force does not depend on the motion;
+/// each column at 1 V), and a gap force scaled by its voltage's square (the electrodes' pressure
+/// at 1 V, which must also be the run's `force` or one of its sum).
+struct FrameDrives {
+  Eigen::MatrixXd patterns;            ///< n x m, reduced, internal units
+  std::vector<VoltageDrive> voltages;  ///< one per column of `patterns`
+  FrameGapForce<ElectrostaticPressure>* electrodes = nullptr;
+  VoltageDrive electrode_voltage;
 };
 
 /// A frame's transient run: its status, steps and timing in `run`, whose output (extremes and
@@ -66,11 +80,14 @@ inline OutputPoint FrameMotionComponent(const FrameModel& model, const FrameReco
 /// frame under the loads (removed at t = 0); a mechanism is Status::kNotPositiveDefinite. With
 /// a nonlinear `force` (the members' stretching; it must outlive the run) the Newmark family
 /// takes its Newton path, the modal path holds the force over each step, and a static start
-/// solves the nonlinear statics.
+/// solves the nonlinear statics. `drives` add the forces that voltages drive, from t = 0 on
+/// whatever the start (at each step their amplitude is V(t)^2 at the step's end); the watched
+/// component is then the one the loads and the drives' mean forces move most.
 inline FrameTransientResult RunFrameTransient(const FrameModel& model, const FrameLoadCase& loads,
                                               const TransientOptions& options,
                                               const std::vector<FrameRecordPoint>& record,
-                                              NonlinearForce* force = nullptr) {
+                                              NonlinearForce* force = nullptr,
+                                              const FrameDrives& drives = {}) {
   options.Validate();
   if (record.empty()) throw std::invalid_argument("a frame transient records at least one point");
   // The longest member: the recorder declares a run diverged beyond a thousand of it.
@@ -79,9 +96,26 @@ inline FrameTransientResult RunFrameTransient(const FrameModel& model, const Fra
   TransientResult& result = out.run;
   const int n = model.FreeDofCount();
   const Eigen::VectorXd pattern = AssembleFrameLoads(model, loads);
-  Eigen::VectorXd statics;
+  const auto driven = static_cast<Eigen::Index>(drives.voltages.size());
+  if (drives.patterns.cols() != driven || (driven > 0 && drives.patterns.rows() != n)) {
+    throw std::invalid_argument("frame drives: one voltage per pattern of the model's size");
+  }
+  Eigen::MatrixXd patterns(n, 1 + driven);
+  patterns.col(0) = pattern;
+  Eigen::VectorXd mean = pattern;  // the loads and the drives' mean forces
+  for (Eigen::Index c = 0; c < driven; ++c) {
+    const VoltageDrive& v = drives.voltages[static_cast<std::size_t>(c)];
+    patterns.col(1 + c) = drives.patterns.col(c);
+    mean += (v.dc * v.dc + 0.5 * v.ac * v.ac) * drives.patterns.col(c);
+  }
+  Eigen::VectorXd statics, moved;
   result.status = SolveFrameDisplacement(model, pattern, statics);
   if (result.status != Status::kOk) return out;
+  if (driven > 0) {
+    result.status = SolveFrameDisplacement(model, mean, moved);
+    if (result.status != Status::kOk) return out;
+  }
+  const Eigen::VectorXd& watched = driven > 0 ? moved : statics;
 
   std::vector<OutputPoint> channels;
   for (const FrameRecordPoint& point : record) {
@@ -89,19 +123,32 @@ inline FrameTransientResult RunFrameTransient(const FrameModel& model, const Fra
   }
   double largest = 0.0;
   for (int c = 0; c < 3; ++c) {
-    const double u = std::abs(channels[c].Evaluate(statics));
+    const double u = std::abs(channels[c].Evaluate(watched));
     if (u > largest) {
       largest = u;
       out.watched_component = c;
     }
   }
 
-  const BeamStepperSetup setup = MakeBeamStepper(model, options.Stepper(), pattern, force);
+  const BeamStepperSetup setup = MakeBeamStepper(model, options.Stepper(), patterns, force);
   result.status = setup.status;
   if (setup.status != Status::kOk) return out;
   BeamStepper& stepper = *setup.stepper;
   stepper.Watch(channels[out.watched_component]);
-  Eigen::VectorXd s = Eigen::VectorXd::Constant(1, options.Amplitude(0));
+  // The amplitudes at the end of step i: the loads' time function, each drive's V(t)^2; the
+  // electrodes' pressure scaled alike.
+  Eigen::VectorXd s(1 + driven);
+  const auto amplitudes = [&](long i) {
+    const double t = static_cast<double>(i) * options.time_step;
+    s[0] = options.Amplitude(i);
+    for (Eigen::Index c = 0; c < driven; ++c) {
+      s[1 + c] = drives.voltages[static_cast<std::size_t>(c)].SquaredAt(t);
+    }
+    if (drives.electrodes != nullptr) {
+      drives.electrodes->SetScale(drives.electrode_voltage.SquaredAt(t));
+    }
+  };
+  amplitudes(0);
   Eigen::VectorXd d0 = Eigen::VectorXd::Zero(n);
   if (options.start_static && force != nullptr) {
     NonlinearStaticSolve solve(model.Stiffness(), *force, {}, nullptr);
@@ -121,7 +168,7 @@ inline FrameTransientResult RunFrameTransient(const FrameModel& model, const Fra
   recorder.Run(
       result,
       [&](long i) {
-        s[0] = options.Amplitude(i);
+        amplitudes(i);
         return stepper.Step(s);
       },
       [&] { return stepper.Watched(); },

@@ -24,12 +24,17 @@ FrameCouplings MakeFrameCouplings(const Scene& scene);
 /// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.
 FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure);
 
-/// The scene's [[effects.combs]] on their bodies, each as thick as its body.
+/// The scene's [[effects.combs]] on their bodies, each as thick as its body, with its
+/// alternating voltage.
 std::vector<CombDrive> MakeCombDrives(const Scene& scene, const StructureDescription& structure);
 
 /// The scene's electrodes under a device (structure.gap; effects.electrostatic's electrodes, or
 /// one under all of it, and fringing) and a pull-in's voltage bound (analysis.voltage_max).
 FramePullInOptions MakeFramePullInOptions(const Scene& scene);
+
+/// The electrodes' voltage in a device's transient: effects.electrostatic's voltage, plus its
+/// ac_voltage at its frequency.
+VoltageDrive MakeElectrodeDrive(const Scene& scene);
 
 /// The points a device's transient records: the nodes and bodies of analysis.record (a name that
 /// is a node and a body is the node), then every other body's centre. The first is watched.

@@ -42,6 +42,8 @@ struct ElectrostaticEffect {
   std::optional<double> electrode_start;   ///< m from the first support, in [0, length]
   std::optional<double> electrode_end;     ///< m from the first support, in [0, length]
   std::vector<SceneElectrode> electrodes;  ///< a device's; empty: one under all of it
+  double ac_voltage = 0.0;                 ///< V: a device's transient adds ac sin(2 pi f t)
+  std::optional<double> frequency;         ///< Hz, of the alternating part
 };
 
 /// [effects.casimir]: the ideal parallel-plate Casimir pressure.
@@ -77,6 +79,8 @@ struct SceneComb {
   double overlap = 0.0;                                  ///< m, the engagement at rest
   Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< in the substrate plane
   double voltage = 0.0;                                  ///< V
+  double ac_voltage = 0.0;          ///< V: a transient adds ac_voltage sin(2 pi frequency t)
+  std::optional<double> frequency;  ///< Hz, of the alternating part
 };
 
 /// Whether an effect is simulated: its table present and not disabled.

@@ -92,12 +92,17 @@ class FrameGapForce final : public FrameElementForce {
     }
   }
 
+  /// Scales the pressure by `scale` from now on (V^2 for the electrostatic pressure at 1 V: a
+  /// transient's voltage in time); 1 at construction. Integrate() is not scaled.
+  void SetScale(double scale) { scale_ = scale; }
+
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     for (const Point& point : points_) {
       const double gap = Gap(point, d);
       if (!(gap > 0.0)) return false;
-      const double p = point.pressure.Value(gap) * point.area_m2 / force_n_;
-      const double dp = point.pressure.Slope(gap) * point.area_m2 * length_m_ / force_n_;
+      const double area = scale_ * point.area_m2;
+      const double p = point.pressure.Value(gap) * area / force_n_;
+      const double dp = point.pressure.Slope(gap) * area * length_m_ / force_n_;
       for (int i = 0; i < point.count; ++i) {
         force[point.dof[i]] += point.n[i] * p;
         for (int j = i; j < point.count; ++j) {
@@ -112,7 +117,8 @@ class FrameGapForce final : public FrameElementForce {
     FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
     for (int k = first_point_[e]; k < first_point_[e + 1]; ++k) {
       const Point& point = points_[k];
-      out += point.local * (point.pressure.Value(Gap(point, d)) * point.area_m2 / force_n_);
+      out +=
+          point.local * (point.pressure.Value(Gap(point, d)) * scale_ * point.area_m2 / force_n_);
     }
     return out;
   }
@@ -283,6 +289,7 @@ class FrameGapForce final : public FrameElementForce {
   const FrameModel& model_;
   double length_m_;               ///< metres per internal length unit
   double force_n_;                ///< newtons per internal force unit
+  double scale_ = 1.0;            ///< the pressure's factor (SetScale)
   std::vector<Point> points_;     ///< the members' element by element, then the bodies'
   std::vector<int> first_point_;  ///< element e's points: [first_point_[e], first_point_[e + 1])
 };
