@@ -6,7 +6,17 @@
 // - the folded-flexure resonator against elements per member (10, and 125: 1000 elements in
 //   all), with `x_realtime`, the simulated time per wall time at 20 steps per period of the
 //   lowest mode (the modal path propagates every mode exactly at any step);
-// - the cantilever chain at the same dofs, for the cost per step against dofs of both.
+// - the cantilever chain at the same dofs, for the cost per step against dofs of both;
+// - what each surface effect adds to a device's step (BM_DeviceEffectStep): the serpentine plate
+//   of the scene `serpentine-pullin` (2 um over the substrate, 4 elements per segment, 846 dofs)
+//   pushed down by 1 uN and stepped through the scene's forces (FrameSceneForces), with no
+//   effect (the linear step) or one declared.
+#include <string>
+#include <vector>
+
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
+#include "cosmems/scene/scene_loader.hpp"
 #include "reference_beam.hpp"
 #include "step_time.hpp"
 #include "structure/test_frames.hpp"
@@ -16,14 +26,16 @@ namespace {
 
 constexpr int kModes = 10;
 
-// One stepper of `path` for `model` under a unit load pattern `pattern`, started at rest with
-// the load on; its time step a twentieth of the lowest mode's period.
+// One stepper of `path` for `model` under a unit load pattern `pattern` and the nonlinear
+// `force` (or none), started at rest with the load on; its time step a twentieth of the lowest
+// mode's period.
 template <class Model>
 struct Stepping {
   BeamStepperSetup setup;
   double time_step_s = 0.0;
 
-  Stepping(const Model& model, TimePath path, const Eigen::VectorXd& pattern) {
+  Stepping(const Model& model, TimePath path, const Eigen::VectorXd& pattern,
+           NonlinearForce* force) {
     ModalOptions ten;
     ten.count = kModes;
     const ModalResult modes = SolveModal(model, ten);
@@ -33,7 +45,7 @@ struct Stepping {
     options.modes = kModes;
     options.time_step = time_step_s;
     options.parameters = GeneralizedAlphaParameters::Newmark(0.25, 0.5);
-    setup = MakeBeamStepper(model, options, pattern, nullptr);
+    setup = MakeBeamStepper(model, options, pattern, force);
     const int n = model.FreeDofCount();
     if (setup.status == Status::kOk) {
       setup.status = setup.stepper->Initialize(Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n),
@@ -45,8 +57,8 @@ struct Stepping {
 // Times the steps of `model` and sets the counters.
 template <class Model>
 void TimeSteps(benchmark::State& state, const Model& model, TimePath path,
-               const Eigen::VectorXd& pattern) {
-  Stepping<Model> stepping(model, path, pattern);
+               const Eigen::VectorXd& pattern, NonlinearForce* force = nullptr) {
+  Stepping<Model> stepping(model, path, pattern, force);
   if (stepping.setup.status != Status::kOk) {
     state.SkipWithError("set-up failed");
     return;
@@ -118,6 +130,29 @@ BENCHMARK(BM_ChainStep)
     ->Arg(100)
     ->Arg(300)
     ->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+
+// The serpentine plate with the effects `sets` declare (its electrode off).
+void BM_DeviceEffectStep(benchmark::State& state, std::vector<std::string> sets) {
+  sets.insert(sets.end(), {"analysis.type=\"transient\"", "analysis.duration=1e-4",
+                           "analysis.time_step=1e-7", "effects.electrostatic.enabled=false"});
+  std::vector<SceneOverride> overrides;
+  for (const std::string& set : sets) overrides.push_back(SceneOverride::Parse(set));
+  const Scene scene = LoadScene("serpentine-pullin", overrides);
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  FrameSceneForces forces(model, scene);
+  FrameLoadCase push;
+  push.points.push_back({-1, 0, {0, -1e-6, 0}, {0, 0, 0}});
+  TimeSteps(state, model, TimePath::kNewmarkFamily, AssembleFrameLoads(model, push),
+            forces.all().Empty() ? nullptr : &forces.all());
+}
+BENCHMARK_CAPTURE(BM_DeviceEffectStep, none, {})->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_DeviceEffectStep, casimir, {"effects.casimir.enabled=true"})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_DeviceEffectStep, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_DeviceEffectStep, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"})
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

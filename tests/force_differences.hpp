@@ -43,4 +43,41 @@ void ExpectForceAndTangentMatchDifferences(NonlinearForce& force, const Eigen::V
   EXPECT_LT((fd_tangent - dense).norm(), tolerance * dense.norm());
 }
 
+/// Expects the tangents of the velocity-dependent part of `force` (EvaluateViscous) at (d, v)
+/// within `tolerance` (relative) of central differences of that part: dr/dd with step h in d,
+/// dr/dv with step hv in v (dr/dv is what a velocity factor of 1 adds). Also expects the power
+/// v^T r it takes to be positive.
+inline void ExpectViscousTangentsMatchDifferences(NonlinearForce& force, const Eigen::VectorXd& d,
+                                                  const Eigen::VectorXd& v, int bandwidth, double h,
+                                                  double hv, double tolerance) {
+  const auto n = static_cast<int>(d.size());
+  const auto evaluate = [&](const Eigen::VectorXd& dd, const Eigen::VectorXd& vv, double factor,
+                            ForceTangent& tangent) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
+    tangent.Clear();
+    EXPECT_TRUE(force.EvaluateViscous(dd, vv, factor, r, tangent));
+    return r;
+  };
+  ForceTangent at_rest(n, bandwidth), moving(n, bandwidth), scratch(n, bandwidth);
+  const Eigen::VectorXd r = evaluate(d, v, 0.0, at_rest);  // dr/dd alone
+  evaluate(d, v, 1.0, moving);                             // dr/dd + dr/dv
+  EXPECT_GT(v.dot(r), 0.0);
+  Eigen::MatrixXd by_d(n, n), by_v(n, n);
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd plus = d, minus = d;
+    plus[j] += h;
+    minus[j] -= h;
+    by_d.col(j) = (evaluate(plus, v, 0.0, scratch) - evaluate(minus, v, 0.0, scratch)) / (2 * h);
+    Eigen::VectorXd faster = v, slower = v;
+    faster[j] += hv;
+    slower[j] -= hv;
+    by_v.col(j) =
+        (evaluate(d, faster, 0.0, scratch) - evaluate(d, slower, 0.0, scratch)) / (2 * hv);
+  }
+  const Eigen::MatrixXd dr_dd = at_rest.ToDense();
+  const Eigen::MatrixXd dr_dv = moving.ToDense() - dr_dd;
+  EXPECT_LT((by_d - dr_dd).norm(), tolerance * dr_dd.norm());
+  EXPECT_LT((by_v - dr_dv).norm(), tolerance * dr_dv.norm());
+}
+
 }  // namespace cosmems::test

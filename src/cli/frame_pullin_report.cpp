@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "cosmems/scene/frame_conversion.hpp"
-#include "cosmems/structure/frame_stretching_force.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "frame_solution_output.hpp"
 #include "json_vector.hpp"
 #include "text_format.hpp"
@@ -37,10 +37,8 @@ std::unique_ptr<FramePullInReport> FramePullInReport::Run(const Scene& scene) {
   StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure, MakeFrameCouplings(scene));
   const FramePullInOptions options = MakeFramePullInOptions(scene);
-  std::optional<FrameStretchingForce> stretching;
-  std::vector<FrameElementForce*> others;
-  if (scene.model.theory == Theory::kStretching) others.push_back(&stretching.emplace(model));
-  FramePullInResult result = SolveFramePullIn(model, options, others);
+  FrameSceneForces others(model, scene);
+  FramePullInResult result = SolveFramePullIn(model, options, others.elements());
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.fold.status;

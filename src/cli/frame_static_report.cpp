@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "cosmems/scene/frame_conversion.hpp"
-#include "cosmems/structure/frame_stretching_force.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "frame_solution_output.hpp"
 #include "text_format.hpp"
 
@@ -21,17 +21,14 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   std::vector<CombDriveState> comb_states;
   FrameStaticSolution solution;
   std::optional<double> capacitance;
-  std::optional<FrameStretchingForce> stretching;
-  std::vector<FrameElementForce*> forces;
-  if (scene.model.theory == Theory::kStretching) forces.push_back(&stretching.emplace(model));
+  FrameSceneForces scene_forces(model, scene);
+  const std::vector<FrameElementForce*>& forces = scene_forces.elements();
   if (IsOn(scene.effects.electrostatic)) {
     FrameGapForce<ElectrostaticPressure> electrostatic = MakeFrameElectrostaticForce(
         model, MakeFramePullInOptions(scene), *scene.effects.electrostatic->voltage);
     solution = SolveFrameNonlinearStatic(model, forces, loads, &electrostatic);
     if (solution.status == Status::kOk) {
-      capacitance = electrostatic.Integrate(solution.displacement, [](const auto& p, double gap) {
-        return p.CapacitancePerArea(gap);
-      });
+      capacitance = electrostatic.Capacitance(solution.displacement);
     }
   } else if (!forces.empty()) {
     solution = SolveFrameNonlinearStatic(model, forces, loads);
@@ -51,14 +48,16 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
     header.WarnIfThroughSubstrate("the linear solution deflects", solution.max_deflection,
                                   scene.structure.gap);
   }
-  // A supported device that finds no equilibrium under its voltage has pulled in: its tangent
-  // turned indefinite on the way, which is no fault of its supports.
-  if (solution.status != Status::kOk && IsOn(scene.effects.electrostatic) &&
+  // A supported device that finds no equilibrium under its surface forces has pulled in: its
+  // tangent turned indefinite on the way, which is no fault of its supports.
+  if (solution.status != Status::kOk && scene.effects.HasSurfacePressure() &&
       SpdSolver().Compute(model.Stiffness()) == Status::kOk) {
     header.status = Status::kNotConverged;
     header.warnings.push_back(
-        "no equilibrium up to effects.electrostatic.voltage: the device pulls in below it (run "
-        "analysis.type = \"pullin\" for the voltage)");
+        IsOn(scene.effects.electrostatic)
+            ? "no equilibrium up to effects.electrostatic.voltage: the device pulls in below it "
+              "(run analysis.type = \"pullin\" for the voltage)"
+            : "no equilibrium: the surface forces pull the device onto the substrate");
   }
   return std::make_unique<FrameStaticReport>(std::move(header), std::move(structure),
                                              std::move(solution), std::move(combs),

@@ -10,9 +10,9 @@
 #include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
-#include "cosmems/structure/frame_stretching_force.hpp"
 #include "csv_file.hpp"
 #include "text_format.hpp"
 
@@ -39,9 +39,8 @@ TransientResult RunDevice(const Scene& scene, const TransientOptions& options, i
   const std::vector<FrameRecordPoint> record = MakeFrameRecord(scene, structure);
   // The nonlinear forces the scene declares (only these are evaluated) and what its voltages
   // drive: the combs' forces as loads, the electrodes' pressure scaled by V(t)^2.
-  ForceSum forces;
-  std::optional<FrameStretchingForce> stretching;
-  if (scene.model.theory == Theory::kStretching) forces.Add(stretching.emplace(model));
+  FrameSceneForces scene_forces(model, scene);
+  ForceSum& forces = scene_forces.all();
   FrameDrives drives = CombDriveLoads(model, MakeCombDrives(scene, structure));
   std::optional<FrameGapForce<ElectrostaticPressure>> electrodes;
   if (IsOn(scene.effects.electrostatic)) {

@@ -111,6 +111,14 @@ TransientOptions MakeTransientOptions(const Scene& scene) {
   return out;
 }
 
+SqueezeFilmOptions MakeSqueezeFilmOptions(const Scene& scene) {
+  SqueezeFilmOptions out;
+  const SqueezeFilmEffect& film = *scene.effects.squeeze_film;
+  out.viscosity = film.viscosity.value_or(out.viscosity);
+  out.mean_free_path = film.mean_free_path.value_or(out.mean_free_path);
+  return out;
+}
+
 ContactOptions MakeContactOptions(const Scene& scene) {
   const SceneEffects& e = scene.effects;
   ContactOptions out;

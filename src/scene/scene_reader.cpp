@@ -403,9 +403,9 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
 
 // A device (a frame, or a parametric device's netlist) runs the static, modal, buckling, transient
 // and pull-in analyses, linear or with its members' stretching; of the effects through the
-// substrate it takes the electrodes (static and pull-in), the others act on a cantilever or a
-// bridge. Its netlist must be sound, and its loads and recorded points must name its nodes and
-// bodies.
+// substrate it takes the electrodes, the Casimir and van der Waals pressures and the gas film
+// (CheckSurface says where each acts); contact and stiction act on a cantilever or a bridge. Its
+// netlist must be sound, and its loads and recorded points must name its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
@@ -430,14 +430,12 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                 "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
   const SceneEffects& e = scene.effects;
-  for (const auto& [on, table] :
-       {std::pair{IsOn(e.stiction), "effects.stiction"},
-        std::pair{e.HasContact(), "effects.contact"}, std::pair{IsOn(e.casimir), "effects.casimir"},
-        std::pair{IsOn(e.van_der_waals), "effects.van_der_waals"},
-        std::pair{IsOn(e.squeeze_film), "effects.squeeze_film"}}) {
+  for (const auto& [on, table] : {std::pair{IsOn(e.stiction), "effects.stiction"},
+                                  std::pair{e.HasContact(), "effects.contact"}}) {
     r.Require(!on, table,
               "acts on a cantilever or a bridge, not on " + kind +
-                  " (a device takes [effects.electrostatic] and [[effects.combs]])");
+                  " (a device takes [effects.electrostatic], [[effects.combs]], [effects.casimir], "
+                  "[effects.van_der_waals] and [effects.squeeze_film])");
   }
   if (IsOn(e.electrostatic)) {
     r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling,
@@ -478,6 +476,9 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
               "instability) and drives a \"transient\"");
     r.Require(type == AnalysisType::kTransient || scene.model.theory == Theory::kLinear, entry,
               "a comb drive's statics take model.theory = \"linear\"");
+    r.Require(type == AnalysisType::kTransient || !scene.effects.HasSurfacePressure(), entry,
+              "a comb drive's statics are linear: solve them without [effects.casimir] and "
+              "[effects.van_der_waals]");
     CheckAlternatingVoltage(r, entry, comb.ac_voltage, comb.frequency, type);
     r.Require(structure.FindBody(comb.body) >= 0, entry + ".body", "no body \"" + comb.body + "\"");
     r.Require(comb.direction.y() == 0.0 && !comb.direction.isZero(0.0), entry + ".direction",

@@ -105,8 +105,8 @@ TEST(DevicePullInCliTest, ElectrodesWhereTheyCannotActAreRefused) {
                                "effects.electrostatic.electrodes=[{x=[0.0,1e-4],z=[0.0,1e-6]}]"}),
                  "effects.electrostatic.electrodes");
   ExpectContains(
-      InvalidInput({"run", "serpentine-pullin", "--set", "effects.casimir.enabled=true"}),
-      "effects.casimir");
+      InvalidInput({"run", "serpentine-pullin", "--set", "effects.stiction.adhesion_energy=0.02"}),
+      "effects.stiction");
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"modal\""}),
                  "effects.electrostatic");
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "structure.gap=false"}),

@@ -12,6 +12,7 @@
 #include "cosmems/beam/load_vector.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "force_differences.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems {
@@ -85,35 +86,10 @@ TEST(SqueezeFilmTest, TangentsMatchDifferencesOfTheForce) {
   Eigen::VectorXd v(n);
   for (int i = 0; i < n; ++i) v[i] = 1e-3 * std::sin(0.7 * i + 0.2);
   SqueezeFilm<2> film(model, SqueezeFilmOptions{kAir, 68e-9}, kReferenceGap);
-  auto force = [&](const Eigen::VectorXd& dd, const Eigen::VectorXd& vv, double factor,
-                   ForceTangent& tangent) {
-    Eigen::VectorXd r = Eigen::VectorXd::Zero(n);
-    tangent.Clear();
-    EXPECT_TRUE(film.EvaluateViscous(dd, vv, factor, r, tangent));
-    return r;
-  };
-  ForceTangent at_rest(n, model.Stiffness().bandwidth()), moving(n, model.Stiffness().bandwidth()),
-      scratch(n, model.Stiffness().bandwidth());
-  force(d, v, 0.0, at_rest);  // dr/dd alone
-  force(d, v, 1.0, moving);   // dr/dd + dr/dv
-  Eigen::MatrixXd by_d(n, n), by_v(n, n);
   // Central differences of a smooth force: h = 1e-6 of the displacement's scale keeps the
   // truncation (h^2) and the cancellation (1e-16 / h) near 1e-10.
-  const double h = 1e-6 * d.cwiseAbs().maxCoeff(), hv = 1e-6;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd plus = d, minus = d;
-    plus[j] += h;
-    minus[j] -= h;
-    by_d.col(j) = (force(plus, v, 0.0, scratch) - force(minus, v, 0.0, scratch)) / (2 * h);
-    Eigen::VectorXd faster = v, slower = v;
-    faster[j] += hv;
-    slower[j] -= hv;
-    by_v.col(j) = (force(d, faster, 0.0, scratch) - force(d, slower, 0.0, scratch)) / (2 * hv);
-  }
-  const Eigen::MatrixXd dr_dd = at_rest.ToDense();
-  const Eigen::MatrixXd dr_dv = moving.ToDense() - dr_dd;
-  EXPECT_LT((by_d - dr_dd).norm(), 1e-6 * dr_dd.norm());
-  EXPECT_LT((by_v - dr_dv).norm(), 1e-6 * dr_dv.norm());
+  test::ExpectViscousTangentsMatchDifferences(film, d, v, model.Stiffness().bandwidth(),
+                                              1e-6 * d.cwiseAbs().maxCoeff(), 1e-6, 1e-6);
 }
 
 // For small motion the film is c = mu b^3 / g^3 per length, uniform; so is rho A, and the

@@ -7,9 +7,11 @@
 #include "allocation_counter.hpp"
 #include "cosmems/analysis/beam_stepper_factory.hpp"
 #include "cosmems/analysis/modal_reduction.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/structure/serpentine.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_squeeze_film.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/squeeze_film.hpp"
@@ -111,17 +113,48 @@ TEST(SurfaceNoAllocationTest, ModalPressStickAndPeelStepsAllocateNothing) {
   EXPECT_GE(events.releases, 1);
 }
 
+// The serpentine plate of one turn and one element per segment (54 free dofs), and an
+// electrode under its plate.
+StructureDescription SmallSerpentine() {
+  SerpentineDesign design;
+  design.turns = 1;
+  design.elements = 1;
+  return Serpentine(design);
+}
+FrameGapOptions UnderThePlate() {
+  FrameGapOptions electrodes;
+  electrodes.gap = kGap;
+  electrodes.electrodes = {Electrode{{-50e-6, 50e-6}, {-50e-6, 50e-6}}};
+  return electrodes;
+}
+
+// Fifty steps of 0.1 us from rest (n free dofs), the electrodes' pressure rescaled to V(t)^2 before
+// each, allocate nothing and all succeed.
+void ExpectDrivenStepsAllocateNothing(BeamStepper& stepper, int n,
+                                      FrameGapForce<ElectrostaticPressure>& pressure,
+                                      const VoltageDrive& drive) {
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd s = Eigen::VectorXd::Zero(1);
+  pressure.SetScale(drive.SquaredAt(0.0));
+  ASSERT_EQ(stepper.Initialize(zero, zero, s), Status::kOk);
+  int step = 0;
+  Status status = Status::kOk;
+  EXPECT_EQ(test::AllocationsDuring(50,
+                                    [&] {
+                                      ++step;
+                                      pressure.SetScale(drive.SquaredAt(step * 1e-7));
+                                      if (status == Status::kOk) status = stepper.Step(s);
+                                    }),
+            0);
+  EXPECT_EQ(status, Status::kOk);
+}
+
 // A device's steps under an alternating electrode voltage allocate nothing: the serpentine plate
 // over its electrode, its pressure rescaled to V(t)^2 before every step (FrameGapForce), Newton
 // on the frame's band within the counted steps, on both time paths.
 TEST(SurfaceNoAllocationTest, ADeviceDrivenByAnAlternatingVoltageStepsWithoutAllocating) {
-  SerpentineDesign design;  // one turn, one element per segment: 54 free dofs
-  design.turns = 1;
-  design.elements = 1;
-  const FrameModel model(Serpentine(design));
-  FrameGapOptions electrodes;
-  electrodes.gap = kGap;
-  electrodes.electrodes = {Electrode{{-50e-6, 50e-6}, {-50e-6, 50e-6}}};
+  const FrameModel model(SmallSerpentine());
+  const FrameGapOptions electrodes = UnderThePlate();
   const VoltageDrive drive{8.0, 2.0, 1e5};
   for (const TimePath path : {TimePath::kNewmarkFamily, TimePath::kModal}) {
     SCOPED_TRACE(path == TimePath::kModal ? "modal" : "newmark");
@@ -135,22 +168,33 @@ TEST(SurfaceNoAllocationTest, ADeviceDrivenByAnAlternatingVoltageStepsWithoutAll
     const BeamStepperSetup setup =
         MakeBeamStepper(model, options, Eigen::MatrixXd::Zero(n, 1), &pressure);
     ASSERT_EQ(setup.status, Status::kOk);
-    const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n), s = Eigen::VectorXd::Zero(1);
-    pressure.SetScale(drive.SquaredAt(0.0));
-    ASSERT_EQ(setup.stepper->Initialize(zero, zero, s), Status::kOk);
-    int step = 0;
-    Status status = Status::kOk;
-    EXPECT_EQ(test::AllocationsDuring(50,
-                                      [&] {
-                                        ++step;
-                                        pressure.SetScale(drive.SquaredAt(step * 1e-7));
-                                        if (status == Status::kOk) {
-                                          status = setup.stepper->Step(s);
-                                        }
-                                      }),
-              0);
-    EXPECT_EQ(status, Status::kOk);
+    ExpectDrivenStepsAllocateNothing(*setup.stepper, n, pressure, drive);
   }
+}
+
+// The surface forces under a device allocate nothing either: the serpentine plate over its
+// electrode at an alternating voltage, with the Casimir pressure under all of it and the gas film
+// under its members (strips) and its plate (Reynolds' plate), stepped by Newton in the Newmark
+// family (the film's path).
+TEST(SurfaceNoAllocationTest, ADeviceOnItsGasFilmStepsWithoutAllocating) {
+  const FrameModel model(SmallSerpentine());
+  const FrameGapOptions electrodes = UnderThePlate();
+  FrameGapForce<ElectrostaticPressure> pressure(model, ElectrostaticPressure{1.0, 0.0, false},
+                                                electrodes);
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{kGap});
+  FrameSqueezeFilm film(model, SqueezeFilmOptions{1.81e-5, 68e-9}, kGap);
+  ForceSum forces;
+  for (NonlinearForce* f : std::initializer_list<NonlinearForce*>{&pressure, &casimir, &film}) {
+    forces.Add(*f);
+  }
+  const VoltageDrive drive{8.0, 2.0, 1e5};
+  StepperOptions options;
+  options.time_step = 1e-7;
+  const int n = model.FreeDofCount();
+  const BeamStepperSetup setup =
+      MakeBeamStepper(model, options, Eigen::MatrixXd::Zero(n, 1), &forces);
+  ASSERT_EQ(setup.status, Status::kOk);
+  ExpectDrivenStepsAllocateNothing(*setup.stepper, n, pressure, drive);
 }
 
 }  // namespace

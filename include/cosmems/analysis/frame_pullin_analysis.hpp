@@ -71,9 +71,7 @@ inline FramePullInResult SolveFramePullIn(const FrameModel& model,
                                           const std::vector<FrameElementForce*>& others = {}) {
   FramePullInResult out;
   FrameGapForce<ElectrostaticPressure> unit = MakeFrameElectrostaticForce(model, options, 1.0);
-  out.capacitance_f = unit.Integrate(
-      Eigen::VectorXd::Zero(model.FreeDofCount()),
-      [](const ElectrostaticPressure& p, double gap) { return p.CapacitancePerArea(gap); });
+  out.capacitance_f = unit.Capacitance(Eigen::VectorXd::Zero(model.FreeDofCount()));
   out.control_carrier = PullInControlCarrier(model, unit);
   if (out.control_carrier < 0) {
     out.fold.status = Status::kNotPositiveDefinite;
@@ -90,10 +88,9 @@ inline FramePullInResult SolveFramePullIn(const FrameModel& model,
   out.fold = TraceFold(path, options.fold, gap);
   if (out.fold.status != Status::kOk) return out;
   out.shape.displacement = out.fold.displacement;
-  FrameGapForce<ElectrostaticPressure> pulling =
-      MakeFrameElectrostaticForce(model, options, std::sqrt(path.accepted_load()));
+  unit.SetScale(path.accepted_load());  // V^2: the pressure that holds the last stable state
   std::vector<FrameElementForce*> forces = others;
-  forces.push_back(&pulling);
+  forces.push_back(&unit);
   internal::RecoverFrameStatic(model, FrameLoadCase{}, forces, out.shape);
   out.fold.displacement_m = out.shape.max_deflection;
   return out;

@@ -6,6 +6,7 @@
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/core/material.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/surface/squeeze_film.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/damping_model.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
@@ -48,6 +49,10 @@ TransientOptions MakeTransientOptions(const Scene& scene);
 /// pressure is declared: the pressures grow without bound as the faces close), tolerance and
 /// proximity (the core's defaults when absent).
 ContactOptions MakeContactOptions(const Scene& scene);
+
+/// The gas of a scene's effects.squeeze_film: its viscosity and mean free path (the core's
+/// defaults where absent).
+SqueezeFilmOptions MakeSqueezeFilmOptions(const Scene& scene);
 
 /// The pull-in analysis of a validated pullin scene: its electrode (the whole beam unless given),
 /// fringing, the travel imposed at the tip or midspan, and voltage_max as the search's bound.

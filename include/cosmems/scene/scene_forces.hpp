@@ -38,10 +38,8 @@ class SceneForces {
     const double length = scene.structure.length;
     const double gap = scene.structure.gap.value_or(0.0);
     if (IsOn(e.squeeze_film)) {
-      SqueezeFilmOptions film;
-      film.viscosity = e.squeeze_film->viscosity.value_or(film.viscosity);
-      film.mean_free_path = e.squeeze_film->mean_free_path.value_or(film.mean_free_path);
-      squeeze_film_ = std::make_unique<SqueezeFilm<Dim>>(model, film, gap, separation);
+      squeeze_film_ =
+          std::make_unique<SqueezeFilm<Dim>>(model, MakeSqueezeFilmOptions(scene), gap, separation);
       structural_.Add(*squeeze_film_);
     }
     // A pull-in analysis scales the electrode's pressure itself: it is the analysis's unknown.

@@ -1,33 +1,13 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <stdexcept>
-#include <string>
-#include <vector>
 
-#include "cosmems/beam/hermite_shapes.hpp"
-#include "cosmems/core/gauss_legendre.hpp"
-#include "cosmems/core/validation.hpp"
 #include "cosmems/structure/frame_element_force.hpp"
 #include "cosmems/structure/frame_model.hpp"
-#include "cosmems/surface/electrode.hpp"
+#include "cosmems/surface/frame_gap_points.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 
 namespace cosmems {
-
-/// Where a gap pressure acts on a frame: the substrate plane `gap` below the structure's lowest
-/// face at rest, and the electrodes on it (by default one under all of the structure).
-struct FrameGapOptions {
-  double gap = 0.0;  ///< m
-  std::vector<Electrode> electrodes = {Electrode{}};
-  /// Gauss-Legendre points along each element's part over an electrode, and along each side of
-  /// a body's rectangle over one.
-  int points = 4;
-};
 
 /// A pressure whose value depends on the width of the face it acts on (the electrostatic
 /// fringing correction) takes that width here; the others ignore it.
@@ -41,68 +21,31 @@ inline ElectrostaticPressure AtFaceWidth(ElectrostaticPressure pressure, double 
 }
 
 /// A gap pressure p(g) (gap_pressures.hpp) pulling a frame toward the substrate wherever a
-/// member or a body lies over an electrode, each point at its own gap g = g_0 + u_y:
+/// member or a body lies over an electrode (FrameGapPoints), each point at its own gap
+/// g = g_0 + u_y:
 ///   r(d) = sum over points of n p(g) A,   dr/dd = sum of n p'(g) n^T A,
 /// n the point's u_y per unit of each degree of freedom and A its share of the face's area.
-///
-/// A member parallel to the substrate is a strip as wide as its section seen from below; its
-/// deflection toward the substrate is the Hermite cubic of its element (the static shape, as on
-/// the beam), its part over an electrode clipped where its axis crosses the electrode's edges.
-/// A member that is not parallel to the substrate shows it only an end, and feels nothing. A
-/// body is a plate, its lower face at g_0 + u_y + theta_z (x - x_c) - theta_x (z - z_c), its
-/// rectangle clipped by each electrode and integrated by a tensor Gauss rule. The points are
-/// placed once; Evaluate() allocates nothing and returns false where a gap closes (g <= 0) or
-/// is not finite.
+/// Evaluate() allocates nothing and returns false where a gap closes (g <= 0) or is not finite.
 template <class Pressure>
 class FrameGapForce final : public FrameElementForce {
  public:
-  /// Throws std::invalid_argument for a gap that is not positive, an electrode that is empty or
-  /// two electrodes that overlap (their pressures would add where they do).
+  /// Throws std::invalid_argument for the options FrameGapPoints refuses.
   FrameGapForce(const FrameModel& model, Pressure pressure, const FrameGapOptions& options)
-      : model_(model), length_m_(model.units().length), force_n_(model.units().force) {
-    RequirePositive("gap", options.gap);
-    RequireWithin("quadrature points", options.points, 1, 64);
-    const std::vector<Electrode>& electrodes = options.electrodes;
-    for (std::size_t i = 0; i < electrodes.size(); ++i) {
-      const Electrode& a = electrodes[i];
-      if (!(a.x[0] < a.x[1] && a.z[0] < a.z[1])) {
-        throw std::invalid_argument("electrodes[" + std::to_string(i) + "]: empty rectangle");
-      }
-      for (std::size_t j = 0; j < i; ++j) {
-        const auto overlap = electrodes[j].Clip(a.x, a.z);
-        if (overlap[0][0] < overlap[0][1] && overlap[1][0] < overlap[1][1]) {
-          throw std::invalid_argument("electrodes[" + std::to_string(i) + "] overlaps electrodes[" +
-                                      std::to_string(j) + "]");
-        }
-      }
-    }
-    const double substrate = LowestFace() - options.gap;
-    const GaussLegendre rule = GaussLegendre::Of(options.points);
-    first_point_.push_back(0);
-    for (int e = 0; e < model.ElementCount(); ++e) {
-      for (const Electrode& electrode : electrodes) {
-        PlaceOnElement(e, electrode, substrate, rule, pressure);
-      }
-      first_point_.push_back(static_cast<int>(points_.size()));
-    }
-    for (std::size_t b = 0; b < model.description().bodies.size(); ++b) {
-      for (const Electrode& electrode : electrodes) {
-        PlaceOnBody(static_cast<int>(b), electrode, substrate, rule, pressure);
-      }
-    }
-  }
+      : points_(model, options), pressure_(pressure), force_n_(model.units().force) {}
 
   /// Scales the pressure by `scale` from now on (V^2 for the electrostatic pressure at 1 V: a
   /// transient's voltage in time); 1 at construction. Integrate() is not scaled.
   void SetScale(double scale) { scale_ = scale; }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
-    for (const Point& point : points_) {
-      const double gap = Gap(point, d);
+    const double length_m = points_.length_m();
+    for (const FrameGapPoints::Point& point : points_.points()) {
+      const double gap = points_.Gap(point, d);
       if (!(gap > 0.0)) return false;
+      const Pressure pressure = AtFaceWidth(pressure_, point.width_m);
       const double area = scale_ * point.area_m2;
-      const double p = point.pressure.Value(gap) * area / force_n_;
-      const double dp = point.pressure.Slope(gap) * area * length_m_ / force_n_;
+      const double p = pressure.Value(gap) * area / force_n_;
+      const double dp = pressure.Slope(gap) * area * length_m / force_n_;
       for (int i = 0; i < point.count; ++i) {
         force[point.dof[i]] += point.n[i] * p;
         for (int j = i; j < point.count; ++j) {
@@ -115,183 +58,30 @@ class FrameGapForce final : public FrameElementForce {
 
   FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const override {
     FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
-    for (int k = first_point_[e]; k < first_point_[e + 1]; ++k) {
-      const Point& point = points_[k];
-      out +=
-          point.local * (point.pressure.Value(Gap(point, d)) * scale_ * point.area_m2 / force_n_);
+    for (int k = points_.first(e); k < points_.first(e + 1); ++k) {
+      const FrameGapPoints::Point& point = points_.points()[k];
+      const double p = AtFaceWidth(pressure_, point.width_m).Value(points_.Gap(point, d));
+      out += point.local * (p * scale_ * point.area_m2 / force_n_);
     }
     return out;
   }
 
-  /// The sum over the points of per_area(pressure, gap [m]) times their area [m^2]: the
-  /// pressure's resultant [N] with per_area = Value, a capacitance with the capacitance per area.
-  template <class PerArea>
-  double Integrate(const Eigen::VectorXd& d, PerArea per_area) const {
+  /// The capacitance [F] of the faces over the electrodes at d, with Palmer's correction when
+  /// the pressure has fringing (an electrostatic pressure's; independent of its voltage).
+  double Capacitance(const Eigen::VectorXd& d) const {
     double sum = 0.0;
-    for (const Point& point : points_)
-      sum += per_area(point.pressure, Gap(point, d)) * point.area_m2;
-    return sum;
-  }
-
-  /// The area [m^2] of the structure's faces over the electrodes.
-  double Area() const {
-    double sum = 0.0;
-    for (const Point& point : points_) sum += point.area_m2;
+    for (const FrameGapPoints::Point& point : points_.points()) {
+      sum += AtFaceWidth(pressure_, point.width_m).CapacitancePerArea(points_.Gap(point, d)) *
+             point.area_m2;
+    }
     return sum;
   }
 
  private:
-  // A quadrature point: its gap at rest, its area and the u_y it moves by per unit of each
-  // degree of freedom it depends on (distinct dofs, count of them); on a member, also the local
-  // u_y weights of its element (for the element's share, LocalForce).
-  struct Point {
-    std::array<int, 12> dof{};
-    std::array<double, 12> n{};
-    int count = 0;
-    double gap_m = 0.0;
-    double area_m2 = 0.0;
-    FrameModel::ElementVector local = FrameModel::ElementVector::Zero();
-    Pressure pressure;
-  };
-
-  double Gap(const Point& point, const Eigen::VectorXd& d) const {
-    double u = 0.0;
-    for (int i = 0; i < point.count; ++i) u += point.n[i] * d[point.dof[i]];
-    return point.gap_m + u * length_m_;
-  }
-
-  // How far below a member's axis its lower face lies, and how wide the face is seen from below,
-  // for the section turned about the axis so that its thickness direction has the global y
-  // component a1 and its width direction a2.
-  struct Face {
-    double depth = 0.0;
-    double width = 0.0;
-  };
-  Face MemberFace(int e) const {
-    const Eigen::Matrix3d& axes = model_.mesh().elements[e].axes;
-    const RectangularSection& s =
-        model_.description().members[model_.mesh().elements[e].member].section;
-    const double a1 = std::abs(axes(1, 1)), a2 = std::abs(axes(2, 1));
-    return {0.5 * (a1 * s.thickness + a2 * s.width), a1 * s.width + a2 * s.thickness};
-  }
-
-  // The y of the structure's lowest face at rest [m].
-  double LowestFace() const {
-    double lowest = std::numeric_limits<double>::infinity();
-    const FrameMesh& mesh = model_.mesh();
-    for (int e = 0; e < model_.ElementCount(); ++e) {
-      const double depth = MemberFace(e).depth;
-      lowest = std::min({lowest, mesh.nodes[mesh.elements[e].from].position.y() - depth,
-                         mesh.nodes[mesh.elements[e].to].position.y() - depth});
-    }
-    for (const StructureBody& body : model_.description().bodies) {
-      lowest = std::min(lowest, body.center.y() - 0.5 * body.size.y());
-    }
-    return lowest;
-  }
-
-  // The global weights of a point (carrier dofs, weights), merged by dof and stripped of the
-  // rotation's round-off into directions the point does not move in.
-  void SetWeights(Point& point, const std::array<int, 12>& dofs,
-                  const FrameModel::ElementVector& n) {
-    const double largest = n.cwiseAbs().maxCoeff();
-    for (int a = 0; a < 12; ++a) {
-      if (dofs[a] < 0 || std::abs(n[a]) <= 1e-12 * largest) continue;
-      int* end = point.dof.data() + point.count;
-      int* at = std::find(point.dof.data(), end, dofs[a]);
-      if (at == end) {
-        point.dof[point.count] = dofs[a];
-        point.n[point.count++] = n[a];
-      } else {
-        point.n[at - point.dof.data()] += n[a];
-      }
-    }
-  }
-
-  void PlaceOnElement(int e, const Electrode& electrode, double substrate,
-                      const GaussLegendre& rule, Pressure pressure) {
-    const FrameMesh::Element& element = model_.mesh().elements[e];
-    if (std::abs(element.axes(0, 1)) > 1e-9) return;  // not parallel to the substrate
-    const Eigen::Vector3d a = model_.mesh().nodes[element.from].position;
-    const Eigen::Vector3d b = model_.mesh().nodes[element.to].position;
-    // The part of xi in [0, 1] whose axis point lies over the electrode.
-    double lo = 0.0, hi = 1.0;
-    const double start[2] = {a.x(), a.z()}, step[2] = {b.x() - a.x(), b.z() - a.z()};
-    const std::array<double, 2>* bounds[2] = {&electrode.x, &electrode.z};
-    for (int k = 0; k < 2; ++k) {
-      if (step[k] == 0.0) {
-        if (start[k] < (*bounds[k])[0] || start[k] > (*bounds[k])[1]) return;
-        continue;
-      }
-      const double t0 = ((*bounds[k])[0] - start[k]) / step[k];
-      const double t1 = ((*bounds[k])[1] - start[k]) / step[k];
-      lo = std::max(lo, std::min(t0, t1));
-      hi = std::min(hi, std::max(t0, t1));
-    }
-    if (!(hi > lo)) return;
-    const Face face = MemberFace(e);
-    const double a1 = element.axes(1, 1), a2 = element.axes(2, 1);
-    const double l = model_.elements()[e].properties().length;
-    for (std::size_t k = 0; k < rule.points.size(); ++k) {
-      const double xi = lo + rule.points[k] * (hi - lo);
-      const std::array<double, 4> h = HermiteShapes(xi);
-      Point point;
-      point.local[1] = a1 * h[0];
-      point.local[5] = a1 * l * h[1];
-      point.local[7] = a1 * h[2];
-      point.local[11] = a1 * l * h[3];
-      point.local[2] = a2 * h[0];
-      point.local[4] = -a2 * l * h[1];
-      point.local[8] = a2 * h[2];
-      point.local[10] = -a2 * l * h[3];
-      SetWeights(point, model_.ElementDofs(e),
-                 model_.ElementTransform(e).transpose() * point.local);
-      point.gap_m = (a + xi * (b - a)).y() - face.depth - substrate;
-      point.area_m2 = rule.weights[k] * (hi - lo) * element.length * face.width;
-      point.pressure = AtFaceWidth(pressure, face.width);
-      points_.push_back(point);
-    }
-  }
-
-  void PlaceOnBody(int body, const Electrode& electrode, double substrate,
-                   const GaussLegendre& rule, Pressure pressure) {
-    const StructureBody& b = model_.description().bodies[body];
-    const Eigen::Vector3d& c = b.center;
-    const auto clip = electrode.Clip({c.x() - 0.5 * b.size.x(), c.x() + 0.5 * b.size.x()},
-                                     {c.z() - 0.5 * b.size.z(), c.z() + 0.5 * b.size.z()});
-    if (!(clip[0][1] > clip[0][0] && clip[1][1] > clip[1][0])) return;
-    const int carrier = model_.mesh().body_carrier[body];
-    std::array<int, 12> dofs;
-    dofs.fill(-1);
-    dofs[0] = model_.CarrierDof(carrier, 1);
-    dofs[1] = model_.CarrierDof(carrier, 3);
-    dofs[2] = model_.CarrierDof(carrier, 5);
-    const double width = std::min(b.size.x(), b.size.z());
-    for (std::size_t i = 0; i < rule.points.size(); ++i) {
-      for (std::size_t j = 0; j < rule.points.size(); ++j) {
-        const double x = clip[0][0] + rule.points[i] * (clip[0][1] - clip[0][0]);
-        const double z = clip[1][0] + rule.points[j] * (clip[1][1] - clip[1][0]);
-        FrameModel::ElementVector n = FrameModel::ElementVector::Zero();
-        n[0] = 1.0;                       // u_y
-        n[1] = -(z - c.z()) / length_m_;  // theta_x
-        n[2] = (x - c.x()) / length_m_;   // theta_z
-        Point point;
-        SetWeights(point, dofs, n);
-        point.gap_m = c.y() - 0.5 * b.size.y() - substrate;
-        point.area_m2 = rule.weights[i] * rule.weights[j] * (clip[0][1] - clip[0][0]) *
-                        (clip[1][1] - clip[1][0]);
-        point.pressure = AtFaceWidth(pressure, width);
-        points_.push_back(point);
-      }
-    }
-  }
-
-  const FrameModel& model_;
-  double length_m_;               ///< metres per internal length unit
-  double force_n_;                ///< newtons per internal force unit
-  double scale_ = 1.0;            ///< the pressure's factor (SetScale)
-  std::vector<Point> points_;     ///< the members' element by element, then the bodies'
-  std::vector<int> first_point_;  ///< element e's points: [first_point_[e], first_point_[e + 1])
+  FrameGapPoints points_;
+  Pressure pressure_;
+  double force_n_;      ///< newtons per internal force unit
+  double scale_ = 1.0;  ///< the pressure's factor (SetScale)
 };
 
 }  // namespace cosmems

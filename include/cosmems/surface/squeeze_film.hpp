@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/nonlinear_force.hpp"
@@ -21,6 +22,36 @@ struct SqueezeFilmOptions {
     RequirePositive("squeeze_film.viscosity", viscosity);
     RequireWithin("squeeze_film.mean_free_path", mean_free_path, 0.0, 1e-3);
   }
+  /// These options, once Validate() accepts them.
+  SqueezeFilmOptions Validated() const {
+    Validate();
+    return *this;
+  }
+
+  /// mu_eff(d) / d^3 and its derivative in d [SI]: the film's coefficient per b^3 on a strip
+  /// (SqueezeFilm), per unit of a plate's shape factor (PlateSqueezeFactors).
+  std::pair<double, double> Coefficient(double gap) const {
+    const double mu = viscosity;
+    const double g3 = gap * gap * gap;
+    if (mean_free_path == 0.0) return {mu / g3, -3.0 * mu / (g3 * gap)};
+    const double kn = mean_free_path / gap;
+    const double slip = 1.0 + 9.638 * std::pow(kn, 1.159);
+    const double mu_eff = mu / slip;
+    // d(slip)/d(gap) = 9.638 * 1.159 Kn^0.159 dKn/dgap, dKn/dgap = -Kn / gap.
+    const double dslip = -9.638 * 1.159 * std::pow(kn, 1.159) / gap;
+    const double dmu_eff = -mu * dslip / (slip * slip);
+    return {mu_eff / g3, dmu_eff / g3 - 3.0 * mu_eff / (g3 * gap)};
+  }
+};
+
+/// A gas film's force: only a velocity-dependent part (EvaluateViscous), nothing at rest.
+class GasFilmForce : public NonlinearForce {
+ public:
+  bool Evaluate(const Eigen::VectorXd& /*d*/, Eigen::VectorXd& /*force*/,
+                ForceTangent& /*tangent*/) override {
+    return true;  // at rest the film carries nothing
+  }
+  bool HasViscousPart() const override { return true; }
 };
 
 /// Squeeze-film damping: the gas pushed out from under a beam of width b moving toward the
@@ -35,29 +66,22 @@ struct SqueezeFilmOptions {
 /// mu_eff = mu / (1 + 9.638 Kn^1.159), Kn = lambda / d (Veijola et al. 1995), the slip of a
 /// rarefied gas.
 ///
-/// As a NonlinearForce it has only a velocity-dependent part, EvaluateViscous():
+/// As a GasFilmForce it has only a velocity-dependent part, EvaluateViscous():
 ///   r = int N_w^T c(d) v_y dx,
 ///   dr/dd = int N_w^T c'(d) v_y N_w dx,   dr/dv = int N_w^T c(d) N_w dx,
 /// on the adaptive quadrature of GapIntegral (c grows like 1/d^3 near contact). The power it
 /// takes from the beam, v^T r = int c v_y^2 dx, is never negative. Allocates nothing.
 template <int Dim>
-class SqueezeFilm final : public NonlinearForce {
+class SqueezeFilm final : public GasFilmForce {
  public:
   /// `separation` [m]: where contact stops the faces (ContactOptions::separation); nearer than it
   /// the film keeps its coefficient there, as the gap pressures do (GapSpan::separation).
   SqueezeFilm(const BeamModel<Dim>& model, const SqueezeFilmOptions& options, double gap,
               double separation = 0.0)
-      : options_(ValidOptions(options)),
+      : options_(options.Validated()),
         integral_(model,
                   GapSpan{gap, 0.0, model.description().Length()}.WithSeparation(separation)),
         speed_m_s_(model.units().length / model.units().time) {}
-
-  bool Evaluate(const Eigen::VectorXd& /*d*/, Eigen::VectorXd& /*force*/,
-                ForceTangent& /*tangent*/) override {
-    return true;  // at rest the film carries nothing
-  }
-
-  bool HasViscousPart() const override { return true; }
 
   bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
                        Eigen::VectorXd& force, ForceTangent& tangent) override {
@@ -69,7 +93,7 @@ class SqueezeFilm final : public NonlinearForce {
         if (s.dof[i] >= 0) vy += n[i] * v[s.dof[i]];
       }
       const double b3 = s.width_m * s.width_m * s.width_m;
-      const auto [c, slope] = Coefficient(gap);  // per b^3
+      const auto [c, slope] = options_.Coefficient(gap);  // per b^3
       const double dc = integral_.Held(gap) ? 0.0 : slope;
       const double load = weight * b3 * c * vy * speed_m_s_;
       // d(load)/d(d_j) / N_j and d(load)/d(v_j) / N_j, the latter times dv/dd.
@@ -87,26 +111,7 @@ class SqueezeFilm final : public NonlinearForce {
     });
   }
 
-  /// mu_eff(d) / d^3 and its derivative in d [SI], the coefficient per b^3.
-  std::pair<double, double> Coefficient(double gap) const {
-    const double mu = options_.viscosity;
-    const double g3 = gap * gap * gap;
-    if (options_.mean_free_path == 0.0) return {mu / g3, -3.0 * mu / (g3 * gap)};
-    const double kn = options_.mean_free_path / gap;
-    const double slip = 1.0 + 9.638 * std::pow(kn, 1.159);
-    const double mu_eff = mu / slip;
-    // d(slip)/d(gap) = 9.638 * 1.159 Kn^0.159 dKn/dgap, dKn/dgap = -Kn / gap.
-    const double dslip = -9.638 * 1.159 * std::pow(kn, 1.159) / gap;
-    const double dmu_eff = -mu * dslip / (slip * slip);
-    return {mu_eff / g3, dmu_eff / g3 - 3.0 * mu_eff / (g3 * gap)};
-  }
-
  private:
-  static SqueezeFilmOptions ValidOptions(const SqueezeFilmOptions& options) {
-    options.Validate();
-    return options;
-  }
-
   SqueezeFilmOptions options_;
   GapIntegral<Dim> integral_;
   double speed_m_s_;  ///< m/s per internal velocity unit

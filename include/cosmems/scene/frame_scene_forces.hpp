@@ -1,0 +1,58 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "cosmems/beam/force_sum.hpp"
+#include "cosmems/scene/scene.hpp"
+#include "cosmems/scene/scene_conversion.hpp"
+#include "cosmems/structure/frame_element_force.hpp"
+#include "cosmems/structure/frame_model.hpp"
+#include "cosmems/structure/frame_stretching_force.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_squeeze_film.hpp"
+#include "cosmems/surface/gap_pressures.hpp"
+
+namespace cosmems {
+
+/// The nonlinear forces a validated device scene declares besides its electrodes (which each
+/// analysis drives its own way: ramped with the loads, held by the pull-in's path, scaled by the
+/// voltage in time): the members' stretching, the Casimir and van der Waals pressures under all
+/// of the device and the gas film. An effect whose table is absent is never built, so it costs
+/// nothing. The model must outlive the forces.
+class FrameSceneForces {
+ public:
+  FrameSceneForces(const FrameModel& model, const Scene& scene) {
+    const SceneEffects& e = scene.effects;
+    if (scene.model.theory == Theory::kStretching) elements_.push_back(&stretching_.emplace(model));
+    const FrameGapOptions substrate{scene.structure.gap.value_or(0.0)};
+    if (IsOn(e.casimir)) {
+      elements_.push_back(&casimir_.emplace(model, CasimirPressure{}, substrate));
+    }
+    if (IsOn(e.van_der_waals)) {
+      elements_.push_back(&van_der_waals_.emplace(
+          model, VanDerWaalsPressure{*e.van_der_waals->hamaker}, substrate));
+    }
+    for (FrameElementForce* force : elements_) all_.Add(*force);
+    if (IsOn(e.squeeze_film)) {
+      all_.Add(film_.emplace(model, MakeSqueezeFilmOptions(scene), substrate.gap));
+    }
+  }
+  FrameSceneForces(const FrameSceneForces&) = delete;
+  FrameSceneForces& operator=(const FrameSceneForces&) = delete;
+
+  /// The forces at rest, element by element (statics and pull-in): stretching and the pressures.
+  const std::vector<FrameElementForce*>& elements() const { return elements_; }
+  /// Every force, the film included (a transient's); the run may add its electrodes.
+  ForceSum& all() { return all_; }
+
+ private:
+  std::optional<FrameStretchingForce> stretching_;
+  std::optional<FrameGapForce<CasimirPressure>> casimir_;
+  std::optional<FrameGapForce<VanDerWaalsPressure>> van_der_waals_;
+  std::optional<FrameSqueezeFilm> film_;
+  std::vector<FrameElementForce*> elements_;
+  ForceSum all_;
+};
+
+}  // namespace cosmems

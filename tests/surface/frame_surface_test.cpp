@@ -1,0 +1,260 @@
+// Surface forces on devices: the Casimir and van der Waals pressures under a plate on four beams
+// against the roots and folds of its one-degree-of-freedom balance, solved here; the gas film
+// under a plate (PlateSqueezeFactors) against Reynolds' equation solved here by finite
+// differences, and a plate ringing down on its film against the oscillator integrated here; the
+// film's tangents against differences of its force.
+#include <gtest/gtest.h>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "force_differences.hpp"
+#include "plate_on_four_beams.hpp"
+#include "test_beams.hpp"
+
+namespace cosmems {
+namespace {
+
+// Reynolds' equation for a unit film (mu / h^3 = 1) under the plate a x b moving with unit
+// velocity in `shape` (0: translation, 1: tilt about z, lever x; 2: tilt about x, lever z),
+// -lap q = 12 v with q = 0 on the edges, by the five-point Laplacian on an n x (n b / a) grid;
+// returns the shape factor int q v dA (trapezoid rule, the edges contributing nothing).
+double ReynoldsByDifferences(double a, double b, int shape, int n) {
+  const int nx = n, nz = static_cast<int>(std::lround(n * b / a));
+  const double hx = a / nx, hz = b / nz;
+  const int ix = nx - 1, iz = nz - 1;  // interior points
+  const auto index = [&](int i, int j) { return (i - 1) * iz + (j - 1); };
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs(ix * iz), velocity(ix * iz);
+  for (int i = 1; i <= ix; ++i) {
+    for (int j = 1; j <= iz; ++j) {
+      const int k = index(i, j);
+      const double x = i * hx - 0.5 * a, z = j * hz - 0.5 * b;
+      velocity[k] = shape == 0 ? 1.0 : shape == 1 ? x : z;
+      rhs[k] = 12.0 * velocity[k];
+      entries.emplace_back(k, k, 2.0 / (hx * hx) + 2.0 / (hz * hz));
+      if (i > 1) entries.emplace_back(k, index(i - 1, j), -1.0 / (hx * hx));
+      if (i < ix) entries.emplace_back(k, index(i + 1, j), -1.0 / (hx * hx));
+      if (j > 1) entries.emplace_back(k, index(i, j - 1), -1.0 / (hz * hz));
+      if (j < iz) entries.emplace_back(k, index(i, j + 1), -1.0 / (hz * hz));
+    }
+  }
+  Eigen::SparseMatrix<double> laplacian(ix * iz, ix * iz);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::VectorXd q =
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(laplacian).solve(rhs);
+  return q.dot(velocity) * hx * hz;
+}
+
+// The differences' error falls as h^2, so two grids extrapolate it away (Richardson): what is
+// left, ~h^4 at n = 160, is below 1e-6.
+double Reynolds(double a, double b, int shape) {
+  return (4.0 * ReynoldsByDifferences(a, b, shape, 160) - ReynoldsByDifferences(a, b, shape, 80)) /
+         3.0;
+}
+
+// The series against the differences: 1e-5 asserted (the extrapolated differences' error).
+TEST(PlateSqueezeFactorsTest, MatchReynoldsEquationSolvedByDifferences) {
+  for (const double aspect : {1.0, 3.0}) {
+    const double a = 1.0, b = aspect;
+    const PlateSqueezeFactors f = PlateSqueezeFactors::Of(a, b);
+    const double expected[3] = {Reynolds(a, b, 0), Reynolds(a, b, 1), Reynolds(a, b, 2)};
+    const double got[3] = {f.translation, f.tilt_z, f.tilt_x};
+    for (int shape = 0; shape < 3; ++shape) {
+      std::printf("plate 1 x %g, shape %d: series %.9g, differences %.9g\n", aspect, shape,
+                  got[shape], expected[shape]);
+      EXPECT_NEAR(got[shape], expected[shape], 1e-5 * expected[shape]);
+    }
+  }
+}
+
+// Published values and limits: a square plate's translation 0.4217 a^4 (Blech 1983; Bao 2005's
+// beta(1)), and a long plate's film tends to the strip's, a b^3 for translation and a^5 b / 60
+// for the tilt across it, short by 0.63 b / a at the plate's ends (1e-3 at 1000 : 1).
+TEST(PlateSqueezeFactorsTest, MatchTheSquaresPublishedFactorAndTheStripsLimits) {
+  EXPECT_NEAR(PlateSqueezeFactors::Of(1.0, 1.0).translation, 0.4217, 1e-4);
+  const PlateSqueezeFactors long_plate = PlateSqueezeFactors::Of(1000.0, 1.0);
+  EXPECT_NEAR(long_plate.translation / 1000.0, 1.0 - 0.63e-3, 2e-5);
+  EXPECT_NEAR(long_plate.tilt_x * 60.0 / 1000.0, 1.0, 1e-3);
+  // Turning the plate swaps the tilts.
+  const PlateSqueezeFactors wide = PlateSqueezeFactors::Of(2.0, 1.0);
+  const PlateSqueezeFactors deep = PlateSqueezeFactors::Of(1.0, 2.0);
+  EXPECT_NEAR(wide.tilt_z, deep.tilt_x, 1e-14 * wide.tilt_z);
+  EXPECT_NEAR(wide.translation, deep.translation, 1e-14 * wide.translation);
+}
+
+// A thick plate (10 um) on 300 um beams, 0.25 um over the substrate: the beams' faces lie 4 um
+// higher, where the pressures are 1e-5 (Casimir, 1/g^4) and 2e-4 (van der Waals, 1/g^3) of the
+// plate's, on 24 % of its area. Half of a clamped-guided beam's uniform load reaches its guided
+// end (q L^4 / 24 E I = (q L / 2) L^3 / 12 E I), so the plate balances
+//   k x = p(g - x) A + p(g + 4 um) A_beams / 2,
+// the beams' own deflection (up to 2.4e-3 of their gap) changing their share (5e-5 of the whole
+// for van der Waals) by ~2e-7 of the whole.
+constexpr double kCasimirGap = 0.25e-6;
+constexpr double kBeamsAbove = 4e-6;
+constexpr double kBeamsArea = 4 * 300e-6 * 2e-6;
+test::PlateOnFourBeams ThickPlate() { return test::PlateOnFourBeams(300e-6, 10e-6); }
+
+// The stable root of that balance below the fold, by bisection on [0, x_max] where the excess is
+// negative at 0 and positive at x_max.
+template <class Pressure>
+double RestUnder(const test::PlateOnFourBeams& device, Pressure pressure, double x_max) {
+  const double beams = 0.5 * pressure.Value(kCasimirGap + kBeamsAbove) * kBeamsArea;
+  const auto excess = [&](double x) {
+    return device.k * x - pressure.Value(kCasimirGap - x) * device.area - beams;
+  };
+  double lo = 0.0, hi = x_max;
+  for (int i = 0; i < 200; ++i) ((excess(0.5 * (lo + hi)) < 0.0) ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+
+// The device rests where its springs hold the surface force: ~4 % of the gap down, 15 % beyond
+// the linear estimate p(g) A / k; the anchors carry the whole pressure. The beams' deflection
+// leaves ~2e-7 (van der Waals; Casimir's 1e-8): 1e-6 asserted.
+TEST(FrameSurfaceForceTest, CasimirAndVanDerWaalsHoldThePlateWhereItsSpringsBalanceThem) {
+  const test::PlateOnFourBeams device = ThickPlate();
+  const FrameModel model(device.structure);
+  const FrameGapOptions under{kCasimirGap};
+  // Casimir's fold lies at g / 5, van der Waals' at g / 4: the stable roots lie below both.
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, under);
+  const VanDerWaalsPressure vdw_pressure{1e-19};
+  FrameGapForce<VanDerWaalsPressure> vdw(model, vdw_pressure, under);
+  const double x_casimir = RestUnder(device, CasimirPressure{}, kCasimirGap / 5.0);
+  const double x_vdw = RestUnder(device, vdw_pressure, kCasimirGap / 4.0);
+  const double beams_casimir = CasimirPressure{}.Value(kCasimirGap + kBeamsAbove) * kBeamsArea;
+  const double beams_vdw = vdw_pressure.Value(kCasimirGap + kBeamsAbove) * kBeamsArea;
+  const auto plate_casimir = [&](double x) { return CasimirPressure{}.Value(kCasimirGap - x); };
+  const auto plate_vdw = [&](double x) { return vdw_pressure.Value(kCasimirGap - x); };
+  struct Case {
+    FrameElementForce* force;
+    double x, beams;
+    std::function<double(double)> plate;
+  };
+  for (const Case& c : {Case{&casimir, x_casimir, beams_casimir, plate_casimir},
+                        Case{&vdw, x_vdw, beams_vdw, plate_vdw}}) {
+    const FrameStaticSolution s = SolveFrameNonlinearStatic(model, {c.force}, {});
+    ASSERT_EQ(s.status, Status::kOk);
+    const double x = -s.bodies[0][1];
+    std::printf("plate at %.6g of the gap, error %.1e\n", x / kCasimirGap, std::abs(x / c.x - 1.0));
+    EXPECT_GT(c.x, 0.03 * kCasimirGap);
+    EXPECT_NEAR(x, c.x, 1e-6 * c.x);
+    double lift = 0.0;
+    for (const FrameReaction& r : s.reactions) lift += r.force.y();
+    const double pull = c.plate(x) * device.area + c.beams;
+    EXPECT_NEAR(lift, pull, 1e-6 * pull);
+  }
+}
+
+// With Casimir beside it the electrode pulls the plate in sooner: the fold of
+// V^2(x) = 2 (g - x)^2 (k x - p_C(g - x) A) / (eps0 A), maximised here by golden sections.
+// The fold search leaves the voltage within ~1e-7 (frame_pullin_test.cpp); 1e-6 asserted.
+TEST(FrameSurfaceForceTest, CasimirLowersThePullInVoltageToTheFoldOfTheBalance) {
+  const test::PlateOnFourBeams device = ThickPlate();
+  const FrameModel model(device.structure);
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{kCasimirGap});
+  FramePullInOptions options;
+  options.electrodes.gap = kCasimirGap;
+  options.electrodes.electrodes = {device.plate};
+  const FramePullInResult result = SolveFramePullIn(model, options, {&casimir});
+  ASSERT_EQ(result.fold.status, Status::kOk);
+  const auto squared = [&](double x) {
+    const double g = kCasimirGap - x;
+    return 2.0 * g * g * (device.k * x - CasimirPressure{}.Value(g) * device.area) /
+           (kVacuumPermittivity * device.area);
+  };
+  double lo = 0.0, hi = kCasimirGap / 2.0;
+  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int i = 0; i < 200; ++i) {
+    const double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+    (squared(x1) < squared(x2) ? lo : hi) = squared(x1) < squared(x2) ? x1 : x2;
+  }
+  const double voltage = std::sqrt(squared(0.5 * (lo + hi)));
+  const double without = std::sqrt(8.0 * device.k * std::pow(kCasimirGap, 3) /
+                                   (27.0 * kVacuumPermittivity * device.area));
+  std::printf("pull-in with Casimir %.9g V against %.9g V (without it %.9g V)\n",
+              result.fold.voltage_v, voltage, without);
+  EXPECT_LT(voltage, 0.95 * without);
+  EXPECT_NEAR(result.fold.voltage_v, voltage, 1e-6 * voltage);
+}
+
+constexpr double kFilmGap = 6e-6;
+
+// The plate, released 0.2 of the gap down, rings down on its film: m x'' + c(h) x' + k x = 0,
+// c(h) = mu translation / h^3 at the gap h = g + x, integrated here by fourth-order Runge-Kutta
+// at a thousandth of the step. The suspension weighs 1e-3 of polysilicon (its inertia 3e-5 of the
+// plate's) and its strips take ~1e-4 of the film's damping; the trapezoidal rule's phase error,
+// (w h)^2 / 12 per radian at 400 steps a period, adds ~3e-4 of the swing over the run: 2e-3 of
+// the release asserted.
+TEST(FrameSqueezeFilmTest, APlateRingsDownOnItsFilmAsTheOscillator) {
+  const test::PlateOnFourBeams device(100e-6, 2e-6, 1e-3);
+  const FrameModel model(device.structure);
+  const SqueezeFilmOptions air{};
+  FrameSqueezeFilm film(model, air, kFilmGap);
+  const double m = device.Mass(), k = device.k;
+  const double c0 = air.viscosity * PlateSqueezeFactors::Of(device.side, device.side).translation;
+  const double omega = std::sqrt(k / m);
+  const double zeta = c0 / std::pow(kFilmGap, 3) / (2.0 * m * omega);
+  ASSERT_GT(zeta, 0.05);  // a swing that decays visibly over the run
+  ASSERT_LT(zeta, 0.2);
+  const double period = 2.0 * kPi / omega, x0 = -0.2 * kFilmGap;
+  TransientOptions options;
+  options.duration = 3.0 * period;
+  options.time_step = period / 400.0;
+  options.start_static = true;
+  FrameLoadCase release;
+  release.points.push_back({-1, 0, Eigen::Vector3d(0.0, k * x0, 0.0), Eigen::Vector3d::Zero()});
+  const FrameTransientResult run = RunFrameTransient(model, release, options, {{-1, 0}}, &film);
+  ASSERT_EQ(run.run.status, Status::kOk);
+  // The oscillator, from the same release.
+  const auto rate = [&](const Eigen::Vector2d& s) {
+    const double h = kFilmGap + s[0];
+    return Eigen::Vector2d(s[1], -(k * s[0] + c0 / (h * h * h) * s[1]) / m);
+  };
+  Eigen::Vector2d s(x0, 0.0);
+  double t = 0.0, worst = 0.0;
+  const double dt = options.time_step / 1000.0;
+  for (Eigen::Index row = 0; row < run.history.rows(); ++row) {
+    for (; t < run.run.time_s[row] - 0.5 * dt; t += dt) {
+      const Eigen::Vector2d k1 = rate(s), k2 = rate(s + 0.5 * dt * k1),
+                            k3 = rate(s + 0.5 * dt * k2), k4 = rate(s + dt * k3);
+      s += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    }
+    worst = std::max(worst, std::abs(run.history(row, 1) - s[0]));
+  }
+  std::printf("plate on its film: zeta %.3f, largest difference %.2e of the release\n", zeta,
+              worst / std::abs(x0));
+  EXPECT_LT(worst, 2e-3 * std::abs(x0));
+  EXPECT_LT(std::abs(run.history(run.history.rows() - 1, 1)), 0.3 * std::abs(x0));
+}
+
+// The film's force against differences in d and in v, the plate tilted and moving, the beams
+// bent and moving with it. The plate's moments depend on u_y through c(h) times their rates
+// (c' R omega), which the symmetric tangent leaves out: here the plate's tilts do not turn, so
+// that term vanishes, while dr/dv, independent of the rates, checks the tilts' damping. The
+// power the film takes is positive.
+TEST(FrameSqueezeFilmTest, TangentsMatchDifferencesOfTheForce) {
+  const test::PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const int n = model.FreeDofCount();
+  FrameSqueezeFilm film(model, SqueezeFilmOptions{1.81e-5, 68e-9}, kFilmGap);
+  const int plate = model.mesh().body_carrier[0];
+  const int uy = model.CarrierDof(plate, 1);
+  const int tilts[2] = {model.CarrierDof(plate, 3), model.CarrierDof(plate, 5)};
+  Eigen::VectorXd d(n), v(n);
+  for (int i = 0; i < n; ++i) {
+    d[i] = 1e-3 * std::sin(0.3 * i + 0.1);
+    v[i] = 1e-2 * std::sin(0.7 * i + 0.2);
+  }
+  d[uy] = -0.3 * kFilmGap / model.units().length;
+  for (const int tilt : tilts) v[tilt] = 0.0;
+  // h = 1e-7 of the state's scale keeps truncation and cancellation near 1e-9.
+  test::ExpectViscousTangentsMatchDifferences(film, d, v, model.Stiffness().bandwidth(), 1e-7, 1e-7,
+                                              1e-6);
+}
+
+}  // namespace
+}  // namespace cosmems
