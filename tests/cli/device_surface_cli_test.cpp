@@ -1,6 +1,7 @@
 // Surface forces under a device from the CLI: the Casimir pressure joins the electrodes' pull
-// and lowers the serpentine plate's pull-in voltage, the gas film damps the swing a voltage step
-// gives the plate, and what a device cannot take with them is refused naming the key.
+// and lowers the serpentine plate's pull-in voltage, holds the plate or, at a smaller gap, pulls
+// it in on its own; the gas film damps the swing a voltage step gives the plate; and what a
+// device cannot take with them is refused naming the key.
 
 #include <gtest/gtest.h>
 
@@ -50,6 +51,32 @@ TEST(DeviceSurfaceCliTest, TheGasFilmDampsThePlatesSwing) {
   EXPECT_GT(free["displacement_max"].get<double>(), 1.5 * rest);
   EXPECT_LT(film["displacement_max"].get<double>(), rest);
   EXPECT_GT(film["displacement_max"].get<double>(), 0.95 * rest);
+}
+
+// Casimir alone in a static analysis: at 0.2 um the springs hold the plate a little way down
+// (Casimir's fold lies at a fifth of the gap, k g / 5 A = 13 Pa against 0.8 Pa), with no warning;
+// at 50 nm (200 Pa) no equilibrium exists: not converged, exit 3, and a warning that says why.
+TEST(DeviceSurfaceCliTest, CasimirHoldsOrPullsInTheSerpentinePlate) {
+  const std::vector<std::string> casimir = {"serpentine-pullin",
+                                            "--set",
+                                            "analysis.type=\"static\"",
+                                            "--set",
+                                            "effects.electrostatic.enabled=false",
+                                            "--set",
+                                            "effects.casimir.enabled=true"};
+  std::vector<std::string> held = casimir;
+  held.insert(held.end(), {"--set", "structure.gap=0.2e-6"});
+  const nlohmann::json rest = RunJson(held);
+  ASSERT_EQ(rest["status"], "ok");
+  const double x = -rest["bodies"]["plate"]["displacement"][1].get<double>();
+  EXPECT_GT(x, 0.0);
+  EXPECT_LT(x, 0.2e-6 / 5.0);
+  EXPECT_TRUE(rest.at("warnings").empty()) << rest.at("warnings");
+  std::vector<std::string> closed = casimir;
+  closed.insert(closed.end(), {"--set", "structure.gap=0.05e-6"});
+  const nlohmann::json collapsed = RunJson(closed, 3);
+  EXPECT_EQ(collapsed["status"], "not converged");
+  ExpectContains(collapsed["warnings"].dump(), "the surface forces pull the device onto");
 }
 
 TEST(DeviceSurfaceCliTest, SurfaceForcesWhereTheyCannotActAreRefused) {

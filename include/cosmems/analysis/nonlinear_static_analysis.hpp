@@ -160,7 +160,7 @@ class NonlinearStaticSolve : private PlainNewtonScheme {
   const SymmetricBandMatrix& k_;
   NonlinearForce& force_;
   NonlinearForce* ramped_;
-  const NonlinearStaticOptions& options_;
+  NonlinearStaticOptions options_;  // a copy: callers pass temporaries
   NewtonDriver newton_;
   ForceTangent tangent_, ramped_tangent_;
   SymmetricBandMatrix jacobian_;
