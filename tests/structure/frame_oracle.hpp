@@ -297,6 +297,13 @@ struct Modes {
     tiny = static_cast<double>(mu.size()) * std::numeric_limits<double>::epsilon() *
            std::abs(mu[mu.size() - 1]);
   }
+
+  int count() const { return static_cast<int>(mu.size()); }
+  // Whether mode i responds dynamically: it is not a rigid motion, and it is among the lowest
+  // `dynamic` (all of them when `dynamic` <= 0; the modes come highest mu, lowest frequency, last).
+  bool Dynamic(int i, int dynamic) const {
+    return mu[i] > tiny && (dynamic <= 0 || i >= count() - dynamic);
+  }
 };
 }  // namespace detail
 
@@ -309,20 +316,13 @@ struct Modes {
 inline Eigen::MatrixXd StepResponse(const Frame& frame, const Eigen::VectorXd& loads,
                                     const std::vector<double>& times, int dynamic = 0) {
   const detail::Modes modes(frame, loads);
-  const detail::Reduced& reduced = modes.reduced;
-  const Eigen::VectorXd& mu = modes.mu;
-  const Eigen::MatrixXd& x = modes.x;
-  const Eigen::VectorXd& share = modes.share;
-  const int n = static_cast<int>(mu.size());
-  const double tiny = modes.tiny;
-  Eigen::MatrixXd out(static_cast<Eigen::Index>(times.size()), reduced.model.reported);
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(times.size()), modes.reduced.model.reported);
   for (std::size_t t = 0; t < times.size(); ++t) {
-    Eigen::VectorXd a = share;
-    for (int i = 0; i < n; ++i) {
-      const bool oscillates = mu[i] > tiny && (dynamic <= 0 || i >= n - dynamic);
-      if (oscillates) a[i] *= 1 - std::cos(times[t] / std::sqrt(mu[i]));
+    Eigen::VectorXd a = modes.share;
+    for (int i = 0; i < modes.count(); ++i) {
+      if (modes.Dynamic(i, dynamic)) a[i] *= 1 - std::cos(times[t] / std::sqrt(modes.mu[i]));
     }
-    out.row(static_cast<Eigen::Index>(t)) = reduced.Reported(x * a);
+    out.row(static_cast<Eigen::Index>(t)) = modes.reduced.Reported(modes.x * a);
   }
   return out;
 }
@@ -343,24 +343,20 @@ inline HarmonicResponse SteadyHarmonic(const Frame& frame, const Eigen::VectorXd
                                        double omega, double zeta, int dynamic = 0) {
   constexpr double kPi = 3.14159265358979323846;
   const detail::Modes modes(frame, loads);
-  const detail::Reduced& reduced = modes.reduced;
-  const Eigen::VectorXd& mu = modes.mu;
-  const Eigen::MatrixXd& x = modes.x;
-  const Eigen::VectorXd& share = modes.share;
-  const int n = static_cast<int>(mu.size());
-  const double tiny = modes.tiny;
-  Eigen::VectorXd re = share, im = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd re = modes.share, im = Eigen::VectorXd::Zero(modes.count());
   HarmonicResponse out;
-  for (int i = 0; i < n; ++i) {
-    if (!(mu[i] > tiny && (dynamic <= 0 || i >= n - dynamic))) continue;
-    const double c = 2.0 * zeta * std::sqrt(mu[i]);
+  for (int i = 0; i < modes.count(); ++i) {
+    if (!modes.Dynamic(i, dynamic)) continue;
+    const double mu = modes.mu[i];
+    const double c = 2.0 * zeta * std::sqrt(mu);
     const std::complex<double> a =
-        share[i] / std::complex<double>(1.0 - mu[i] * omega * omega, omega * c);
+        modes.share[i] / std::complex<double>(1.0 - mu * omega * omega, omega * c);
     re[i] = a.real();
     im[i] = a.imag();
     out.dissipated += kPi * omega * c * std::norm(a);
   }
-  const Eigen::VectorXd u_re = reduced.Reported(x * re), u_im = reduced.Reported(x * im);
+  const Eigen::VectorXd u_re = modes.reduced.Reported(modes.x * re);
+  const Eigen::VectorXd u_im = modes.reduced.Reported(modes.x * im);
   out.amplitude = (u_re.array().square() + u_im.array().square()).sqrt();
   return out;
 }
