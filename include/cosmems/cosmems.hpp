@@ -7,6 +7,7 @@
 #include "cosmems/analysis/buckling_analysis.hpp"
 #include "cosmems/analysis/comb_drive.hpp"
 #include "cosmems/analysis/comb_drive_analysis.hpp"
+#include "cosmems/analysis/comb_drive_force.hpp"
 #include "cosmems/analysis/cosserat_static_solver.hpp"
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/fold_search.hpp"

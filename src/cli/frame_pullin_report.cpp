@@ -1,7 +1,11 @@
 #include "frame_pullin_report.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <optional>
 
+#include "comb_output.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "frame_solution_output.hpp"
@@ -29,6 +33,32 @@ FramePullInReport::ControlPoint ControlOf(const FrameModel& model, int carrier) 
   return out;
 }
 
+// The combs' side instability as the pull-in of a device without electrodes: every comb's
+// voltage scaled together, the voltage the highest of them reaches, the last stable state's
+// shape, and the largest engagement there as the travel.
+FramePullInResult CombPullIn(const FrameModel& model, const CombDriveSolution& driven,
+                             const std::vector<CombDrive>& combs) {
+  FramePullInResult out;
+  out.fold.status = driven.statics.status;
+  out.fold.solves = driven.solves;
+  if (out.fold.status != Status::kOk) return out;
+  if (!std::isfinite(driven.side_instability_factor)) {
+    out.fold.status = Status::kNotConverged;
+    return out;
+  }
+  out.fold.instability = Instability::kBifurcation;
+  out.shape = driven.last_stable;
+  out.fold.displacement = out.shape.displacement;
+  out.fold.displacement_m = out.shape.max_deflection;
+  for (std::size_t c = 0; c < combs.size(); ++c) {
+    out.fold.voltage_v = std::max(out.fold.voltage_v, driven.combs[c].side_instability_voltage_v);
+    const double engaged = out.shape.bodies[combs[c].body].head<3>().dot(combs[c].Axis());
+    if (std::abs(engaged) > std::abs(out.fold.travel_m)) out.fold.travel_m = engaged;
+  }
+  out.control_carrier = model.mesh().body_carrier[combs.front().body];
+  return out;
+}
+
 }  // namespace
 
 std::unique_ptr<FramePullInReport> FramePullInReport::Run(const Scene& scene) {
@@ -36,19 +66,37 @@ std::unique_ptr<FramePullInReport> FramePullInReport::Run(const Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure, MakeFrameCouplings(scene));
-  const FramePullInOptions options = MakeFramePullInOptions(scene);
+  std::vector<CombDrive> combs = MakeCombDrives(scene, structure);
   FrameSceneForces others(model, scene);
-  FramePullInResult result = SolveFramePullIn(model, options, others.elements());
+  // The combs as the static analysis reports them with the electrodes at rest, and their side
+  // instability.
+  CombDriveSolution driven;
+  if (!combs.empty()) driven = SolveCombDrives(model, FrameLoadCase{}, combs, others.elements());
+  FramePullInResult result;
+  double gap = 0.0;
+  const bool electrodes = IsOn(scene.effects.electrostatic);
+  if (electrodes) {
+    // The electrodes' fold with the combs held at their voltages.
+    const FramePullInOptions options = MakeFramePullInOptions(scene);
+    std::vector<FrameElementForce*> forces = others.elements();
+    std::optional<CombDriveForce> held;
+    if (!combs.empty()) forces.push_back(&held.emplace(model, combs));
+    result = SolveFramePullIn(model, options, forces);
+    gap = options.electrodes.gap;
+  } else {
+    result = CombPullIn(model, driven, combs);
+    gap = combs.front().gap;
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.fold.status;
   header.dofs = model.FreeDofCount();
   header.model.elements = model.ElementCount();
-  PullInResults results = ToPullInResults(result.fold, options.electrodes.gap, scene, header);
+  PullInResults results = ToPullInResults(result.fold, gap, scene, header);
   ControlPoint control = ControlOf(model, result.control_carrier);
-  return std::make_unique<FramePullInReport>(std::move(header), std::move(structure),
-                                             std::move(results), std::move(result),
-                                             std::move(control));
+  return std::make_unique<FramePullInReport>(
+      std::move(header), std::move(structure), std::move(results), std::move(result),
+      std::move(control), electrodes, std::move(combs), std::move(driven.combs));
 }
 
 void FramePullInReport::AddResults(nlohmann::ordered_json& json) const {
@@ -56,16 +104,25 @@ void FramePullInReport::AddResults(nlohmann::ordered_json& json) const {
   json["pullin_point"] = {
       {"name", control_.name ? nlohmann::ordered_json(*control_.name) : nlohmann::ordered_json()},
       {"position", ToJson(control_.position)}};
-  json["capacitance_f"] = {{"electrostatic", result_.capacitance_f}};
+  if (electrodes_) json["capacitance_f"] = {{"electrostatic", result_.capacitance_f}};
+  AddCombStates(structure_, combs_, comb_states_, json);
   AddFrameSolution(structure_, result_.shape, json);
 }
 
 void FramePullInReport::PrintResults(std::ostream& out) const {
-  PrintPullInFields(results_, out);
-  out << "travel held at        " << control_.name.value_or("a member's interior node") << " "
-      << Vector(control_.position) << " m\n";
-  out << "capacitance at rest   " << Scientific(result_.capacitance_f)
-      << " F (the faces over the electrodes)\n";
+  if (electrodes_) {
+    PrintPullInFields(results_, out);
+    out << "travel held at        " << control_.name.value_or("a member's interior node") << " "
+        << Vector(control_.position) << " m\n";
+    out << "capacitance at rest   " << Scientific(result_.capacitance_f)
+        << " F (the faces over the electrodes)\n";
+  } else {
+    out << "pull-in voltage       " << Significant(results_.voltage_v, 6)
+        << " V (the combs' side instability, every comb's voltage scaled together)\n";
+    out << "engagement at it      " << Scientific(results_.travel_m) << " m\n";
+    out << "solves                " << results_.solves << "\n";
+  }
+  PrintCombStates(structure_, combs_, comb_states_, out);
   out << "last stable state:\n";
   PrintFrameSolution(structure_, result_.shape, out);
 }

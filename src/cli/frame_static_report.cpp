@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "comb_output.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "frame_solution_output.hpp"
@@ -23,21 +24,23 @@ std::unique_ptr<FrameStaticReport> FrameStaticReport::Run(const Scene& scene) {
   std::optional<double> capacitance;
   FrameSceneForces scene_forces(model, scene);
   const std::vector<FrameElementForce*>& forces = scene_forces.elements();
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
   if (IsOn(scene.effects.electrostatic)) {
-    FrameGapForce<ElectrostaticPressure> electrostatic = MakeFrameElectrostaticForce(
-        model, MakeFramePullInOptions(scene), *scene.effects.electrostatic->voltage);
-    solution = SolveFrameNonlinearStatic(model, forces, loads, &electrostatic);
-    if (solution.status == Status::kOk) {
-      capacitance = electrostatic.Capacitance(solution.displacement);
-    }
-  } else if (!forces.empty()) {
-    solution = SolveFrameNonlinearStatic(model, forces, loads);
-  } else if (!combs.empty()) {
-    CombDriveSolution driven = SolveCombDrives(model, loads, combs);
+    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
+                                                      *scene.effects.electrostatic->voltage));
+  }
+  FrameElementForce* ramped = electrostatic ? &*electrostatic : nullptr;
+  if (!combs.empty()) {
+    CombDriveSolution driven = SolveCombDrives(model, loads, combs, forces, ramped);
     solution = std::move(driven.statics);
     comb_states = std::move(driven.combs);
+  } else if (ramped != nullptr || !forces.empty()) {
+    solution = SolveFrameNonlinearStatic(model, forces, loads, ramped);
   } else {
     solution = SolveFrameStatic(model, loads);
+  }
+  if (electrostatic && solution.status == Status::kOk) {
+    capacitance = electrostatic->Capacitance(solution.displacement);
   }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -71,24 +74,7 @@ void FrameStaticReport::AddResults(nlohmann::ordered_json& json) const {
   if (electrostatic_capacitance_f_) {
     json["capacitance_f"] = {{"electrostatic", *electrostatic_capacitance_f_}};
   }
-  if (comb_states_.empty()) return;
-  nlohmann::ordered_json capacitances = nlohmann::ordered_json::array();
-  nlohmann::ordered_json side = nlohmann::ordered_json::array();
-  nlohmann::ordered_json combs = nlohmann::ordered_json::array();
-  for (std::size_t c = 0; c < comb_states_.size(); ++c) {
-    const CombDriveState& state = comb_states_[c];
-    capacitances.push_back(state.capacitance_f);
-    // null: no voltage up to a million times the scene's reaches it.
-    side.push_back(std::isfinite(state.side_instability_voltage_v)
-                       ? nlohmann::ordered_json(state.side_instability_voltage_v)
-                       : nlohmann::ordered_json());
-    combs.push_back({{"body", structure_.bodies[combs_[c].body].name},
-                     {"force_n", state.force_n},
-                     {"engagement_m", state.engagement_m}});
-  }
-  json["capacitance_f"] = {{"combs", capacitances}};
-  json["side_instability_voltage_v"] = side;
-  json["combs"] = combs;
+  AddCombStates(structure_, combs_, comb_states_, json);
 }
 
 void FrameStaticReport::PrintResults(std::ostream& out) const {
@@ -97,17 +83,7 @@ void FrameStaticReport::PrintResults(std::ostream& out) const {
     out << "capacitance           " << Scientific(*electrostatic_capacitance_f_)
         << " F (the faces over the electrodes)\n";
   }
-  for (std::size_t c = 0; c < comb_states_.size(); ++c) {
-    const CombDriveState& state = comb_states_[c];
-    out << "comb " << c << " on " << structure_.bodies[combs_[c].body].name << "  force "
-        << Scientific(state.force_n) << " N, engaged " << Scientific(state.engagement_m) << " m, "
-        << Scientific(state.capacitance_f) << " F, side instability at ";
-    if (std::isfinite(state.side_instability_voltage_v)) {
-      out << Significant(state.side_instability_voltage_v, 4) << " V\n";
-    } else {
-      out << "no voltage up to 1e6 times the scene's\n";
-    }
-  }
+  PrintCombStates(structure_, combs_, comb_states_, out);
 }
 
 void FrameStaticReport::WriteFiles(const std::filesystem::path& directory) const {

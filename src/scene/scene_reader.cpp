@@ -277,10 +277,13 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   const bool contact = e.HasContact();
   const AnalysisType type = scene.analysis.type;
   if (type == AnalysisType::kPullin) {
-    r.Require(scene.structure.gap.has_value(), "structure.gap",
+    // A device's combs alone pull in sideways, in the plane: no substrate needed.
+    const bool combs_alone = !IsOn(e.electrostatic) && !e.combs.empty();
+    r.Require(scene.structure.gap.has_value() || combs_alone, "structure.gap",
               "analysis.type = \"pullin\" needs the substrate: give its gap");
-    r.Require(IsOn(e.electrostatic), "effects.electrostatic",
-              "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic]");
+    r.Require(IsOn(e.electrostatic) || combs_alone, "effects.electrostatic",
+              "analysis.type = \"pullin\" needs the electrode: declare [effects.electrostatic] "
+              "(or, on a device, [[effects.combs]] for their side instability)");
     r.Require(!contact, IsOn(e.stiction) ? "effects.stiction" : "effects.contact",
               "not used by analysis.type = \"pullin\", which stops at the fold before contact "
               "(remove the table or set enabled = false)");
@@ -441,9 +444,6 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
     r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling,
               "effects.electrostatic",
               "on " + kind + " it acts in the \"static\", \"pullin\" and \"transient\" analyses");
-    r.Require(e.combs.empty() || type == AnalysisType::kTransient, "effects.combs",
-              "a device's comb drives are solved without [effects.electrostatic] outside a "
-              "transient (declare one transducer or the other)");
     CheckAlternatingVoltage(r, "effects.electrostatic", e.electrostatic->ac_voltage,
                             e.electrostatic->frequency, type);
   }
@@ -471,14 +471,11 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   for (std::size_t i = 0; i < scene.effects.combs.size(); ++i) {
     const SceneComb& comb = scene.effects.combs[i];
     const std::string entry = "effects.combs[" + std::to_string(i) + "]";
-    r.Require(type == AnalysisType::kStatic || type == AnalysisType::kTransient, entry,
-              "a comb drive acts in the \"static\" analysis (its force, capacitance and side "
-              "instability) and drives a \"transient\"");
-    r.Require(type == AnalysisType::kTransient || scene.model.theory == Theory::kLinear, entry,
-              "a comb drive's statics take model.theory = \"linear\"");
-    r.Require(type == AnalysisType::kTransient || !scene.effects.HasSurfacePressure(), entry,
-              "a comb drive's statics are linear: solve them without [effects.casimir] and "
-              "[effects.van_der_waals]");
+    r.Require(type == AnalysisType::kStatic || type == AnalysisType::kPullin ||
+                  type == AnalysisType::kTransient,
+              entry,
+              "a comb drive acts in the \"static\" and \"pullin\" analyses (its force, "
+              "capacitance and side instability) and drives a \"transient\"");
     CheckAlternatingVoltage(r, entry, comb.ac_voltage, comb.frequency, type);
     r.Require(structure.FindBody(comb.body) >= 0, entry + ".body", "no body \"" + comb.body + "\"");
     r.Require(comb.direction.y() == 0.0 && !comb.direction.isZero(0.0), entry + ".direction",

@@ -2,17 +2,31 @@
 // shuttle against F / k with k = 24 E I / L^3, its capacitance, and its side instability against
 // the closed form of Legtenberg et al. (1996) with the suspension's stiffnesses from the oracle
 // (frame_oracle.hpp); a push-pull pair, whose forces cancel and whose negative stiffnesses add.
+// The combs as a nonlinear force (CombDriveForce): its force and tangent against differences of
+// its co-energy, Newton's statics and bisected side instability against the closed forms, and
+// fingers pushed off centre against the two equilibrium equations solved in the test.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
+#include "force_differences.hpp"
 #include "structure/device_checks.hpp"
 
 namespace cosmems {
 namespace {
 
 constexpr double kEps0 = kVacuumPermittivity;
+
+// A force that adds nothing: it puts SolveCombDrives on its nonlinear path with the same physics.
+class NoFrameForce final : public FrameElementForce {
+ public:
+  bool Evaluate(const Eigen::VectorXd&, Eigen::VectorXd&, ForceTangent&) override { return true; }
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd&, int) const override {
+    return FrameModel::ElementVector::Zero();
+  }
+};
 
 struct DrivenFlexure {
   StructureDescription structure = test::FoldedFlexure(100e-6, 6);
@@ -92,6 +106,116 @@ TEST(CombDriveTest, APushPullPairCancelsItsForcesAndAddsItsSideStiffness) {
   const double expected = std::sqrt(f.kz * 8e-18 / (4 * 20 * kEps0 * 2e-6 * 10e-6));
   EXPECT_NEAR(s.combs[0].side_instability_voltage_v, expected, 1e-9 * expected);
   EXPECT_NEAR(s.combs[1].side_instability_voltage_v, expected, 1e-9 * expected);
+}
+
+// The closed-form side-instability voltage of DrivenFlexure's comb (the test above).
+double LegtenbergVoltage(const DrivenFlexure& f) {
+  const double n_eps_t = 20 * kEps0 * 2e-6, g = 2e-6, overlap = 10e-6;
+  const double a = 2 * n_eps_t * n_eps_t / (g * g * g * g * f.kx);
+  const double b = 2 * n_eps_t * overlap / (g * g * g);
+  return std::sqrt((-b + std::sqrt(b * b + 4 * a * f.kz)) / (2 * a));
+}
+
+// r = -grad(V^2 C / 2) and its tangent against central differences of the co-energy and of r,
+// with the shuttle moved along and across the fingers (a third of the gap) so that every term
+// of the Hessian counts. Steps of 1e-4 of the motion: truncation (h^2) and round-off both near
+// 1e-8 of the force; 1e-6 asserted.
+TEST(CombDriveTest, TheCombForceAndItsTangentAreTheCoEnergysDerivatives) {
+  const DrivenFlexure f;
+  const FrameModel model(f.structure);
+  const CombDrive comb = f.Comb(120.0, Eigen::Vector3d(1.0, 0.0, 1.0));
+  CombDriveForce force(model, {comb});
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const int carrier = model.mesh().body_carrier[f.shuttle];
+  const double length = model.units().length;
+  d[model.CarrierDof(carrier, 0)] = 1e-6 / length;
+  d[model.CarrierDof(carrier, 2)] = -0.2e-6 / length;
+  const Eigen::Vector2d xy = force.Motion(d, 0);  // across: (1, 0, -1) / sqrt(2)
+  EXPECT_NEAR(xy[0], 0.8e-6 / std::sqrt(2.0), 1e-15);
+  EXPECT_NEAR(xy[1], 1.2e-6 / std::sqrt(2.0), 1e-15);
+  const double to_internal = model.units().force * length;
+  const auto energy = [&](const Eigen::VectorXd& at) {
+    const Eigen::Vector2d m = force.Motion(at, 0);
+    return -0.5 * 120.0 * 120.0 * comb.Capacitance(m[0], m[1]) / to_internal;
+  };
+  test::ExpectForceAndTangentMatchDifferences(force, d, model.Stiffness().bandwidth(), energy,
+                                              1e-4 * 1e-6 / length, 1e-6);
+  // Beyond the model: a finger on its neighbour, fingers apart.
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  d[model.CarrierDof(carrier, 2)] = -3e-6 / length;
+  EXPECT_FALSE(force.Evaluate(d, r, tangent));
+  d[model.CarrierDof(carrier, 0)] = d[model.CarrierDof(carrier, 2)] = -8e-6 / length;
+  EXPECT_FALSE(force.Evaluate(d, r, tangent));
+}
+
+// With any other force the combs are a CombDriveForce in Newton's statics and the instability
+// is bisected on the tangent's definiteness: centred, the same engagement as the linear path
+// (Newton's tolerance, 1e-9 asserted) and Legtenberg's voltage (the bisection stops at 1e-10;
+// 1e-8 asserted); a second comb pulling back gives the push-pull pair's voltage.
+TEST(CombDriveTest, NewtonsStaticsAndBisectionGiveTheClosedForms) {
+  const DrivenFlexure f;
+  const FrameModel model(f.structure);
+  NoFrameForce nothing;
+  const CombDriveSolution linear = SolveCombDrives(model, {}, {f.Comb(30.0)});
+  const CombDriveSolution s = SolveCombDrives(model, {}, {f.Comb(30.0)}, {&nothing});
+  ASSERT_EQ(s.statics.status, Status::kOk);
+  EXPECT_NEAR(s.combs[0].engagement_m, linear.combs[0].engagement_m,
+              1e-9 * linear.combs[0].engagement_m);
+  EXPECT_NEAR(s.combs[0].force_n, linear.combs[0].force_n, 1e-14 * linear.combs[0].force_n);
+  EXPECT_NEAR(s.combs[0].capacitance_f, linear.combs[0].capacitance_f,
+              1e-9 * linear.combs[0].capacitance_f);
+  const double expected = LegtenbergVoltage(f);
+  EXPECT_NEAR(s.combs[0].side_instability_voltage_v, expected, 1e-8 * expected);
+  // The last stable state sits just below it, its engagement F / k_x there.
+  const double below = s.last_stable_factor * 30.0;
+  EXPECT_NEAR(below, expected, 1e-8 * expected);
+  const double engaged = f.Comb(below).Force(below) / f.kx;
+  EXPECT_NEAR(s.last_stable.bodies[f.shuttle][0], engaged, 1e-8 * engaged);
+  EXPECT_NEAR(linear.last_stable.bodies[f.shuttle][0], engaged, 1e-8 * engaged);
+
+  const CombDriveSolution pair = SolveCombDrives(
+      model, {}, {f.Comb(25.0), f.Comb(25.0, -Eigen::Vector3d::UnitX())}, {&nothing});
+  ASSERT_EQ(pair.statics.status, Status::kOk);
+  const double paired = std::sqrt(f.kz * 8e-18 / (4 * 20 * kEps0 * 2e-6 * 10e-6));
+  EXPECT_NEAR(pair.combs[1].side_instability_voltage_v, paired, 1e-8 * paired);
+}
+
+// A side load F pushes the shuttle y across its fingers, and the fingers pull it further:
+//   k_x x = V^2 q (1/(g-y) + 1/(g+y)) / 2,   k_z y = F + V^2 q (L0 + x) (1/(g-y)^2 - 1/(g+y)^2) / 2
+// (q = N eps0 t), the suspension's stiffnesses decoupled by its symmetry, solved here by Newton
+// on the pair. At 0.9 of the side-instability voltage and F = 0.03 k_z g the offset is a twentieth
+// of the gap and more than 2 % above the linearised comb's; Newton's statics meet the pair to 1e-7
+// (k_z's round-off 1e-10, the statics' tolerance 1e-8).
+TEST(CombDriveTest, FingersPushedOffCentrePullTheShuttleFurther) {
+  const DrivenFlexure f;
+  const double v = 0.9 * LegtenbergVoltage(f), g = 2e-6, overlap = 10e-6;
+  const double q = 20 * kEps0 * 2e-6, side = 0.03 * f.kz * g;
+  FrameLoadCase loads;
+  const Eigen::Vector3d across = f.Comb(v).Lateral();
+  loads.points.push_back({-1, f.shuttle, side * across, Eigen::Vector3d::Zero()});
+  NoFrameForce nothing;
+  const CombDriveSolution s =
+      SolveCombDrives(FrameModel(f.structure), loads, {f.Comb(v)}, {&nothing});
+  ASSERT_EQ(s.statics.status, Status::kOk);
+  Eigen::Vector2d xy(0.0, 0.0);
+  for (int i = 0; i < 50; ++i) {
+    const double x = xy[0], y = xy[1], a = 1 / (g - y), b = 1 / (g + y);
+    const double h = 0.5 * v * v * q;
+    const Eigen::Vector2d residual(f.kx * x - h * (a + b),
+                                   f.kz * y - side - h * (overlap + x) * (a * a - b * b));
+    Eigen::Matrix2d jacobian;
+    jacobian << f.kx, -h * (a * a - b * b), -h * (a * a - b * b),
+        f.kz - 2 * h * (overlap + x) * (a * a * a + b * b * b);
+    xy -= jacobian.lu().solve(residual);
+  }
+  EXPECT_NEAR(s.combs[0].engagement_m, xy[0], 1e-7 * xy[0]);
+  EXPECT_NEAR(s.combs[0].offset_m, xy[1], 1e-7 * xy[1]);
+  EXPECT_NEAR(s.statics.bodies[f.shuttle].head<3>().dot(across), xy[1], 1e-7 * xy[1]);
+  const double linearised = side / (f.kz - f.Comb(v).SideStiffness(v, xy[0]));
+  std::printf("off centre: %.6e m, linearised comb %.6e m\n", xy[1], linearised);
+  EXPECT_GT(xy[1], 1.02 * linearised);
+  EXPECT_NEAR(s.combs[0].force_n, f.Comb(v).Force(v, xy[1]), 1e-12 * s.combs[0].force_n);
 }
 
 TEST(CombDriveTest, BadCombsAreRefused) {

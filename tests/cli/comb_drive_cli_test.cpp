@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli_test_support.hpp"
 
@@ -129,6 +131,83 @@ TEST(CombDriveCliTest, ACombDrivesATransientAtItsVoltageInTime) {
   EXPECT_NEAR(resonant["displacement_max"].get<double>(), offset + swing, 0.04 * swing);
 }
 
+// Without electrodes a device's pull-in is its combs' side instability: the voltage the static
+// analysis reports (the same closed-form solve), a bifurcation, and the last stable state's
+// shuttle at F / k of the voltage there (k = 24 E I / L^3, exact to 1e-10).
+TEST(CombDriveCliTest, APullInOfCombsAloneIsTheirSideInstability) {
+  const nlohmann::json statics = RunJson({"comb-drive"});
+  const nlohmann::json pullin = RunJson({"comb-drive", "--set", "analysis.type=\"pullin\""});
+  ASSERT_EQ(pullin["status"], "ok");
+  const double side = statics["side_instability_voltage_v"][0].get<double>();
+  EXPECT_NEAR(pullin["pullin_voltage_v"].get<double>(), side, 1e-12 * side);
+  EXPECT_NEAR(pullin["side_instability_voltage_v"][0].get<double>(), side, 1e-12 * side);
+  EXPECT_EQ(pullin["pullin_instability"], "bifurcation");
+  EXPECT_EQ(pullin["pullin_point"]["name"], "shuttle");
+  const double eps0 = 8.8541878128e-12, k = 2 * 160e9 * 2e-6 * 8e-18 / 1e-12;
+  const double engaged = 20 * eps0 * 2e-6 * side * side / 2e-6 / k;
+  EXPECT_NEAR(pullin["bodies"]["shuttle"]["displacement"][0].get<double>(), engaged,
+              1e-8 * engaged);
+  EXPECT_NEAR(pullin["pullin_travel_m"].get<double>(), engaged, 1e-8 * engaged);
+  // The comb entries are the static analysis's at the comb's voltage.
+  EXPECT_EQ(pullin["combs"][0]["engagement_m"], statics["combs"][0]["engagement_m"]);
+  const testing::CliOutcome text =
+      testing::Cli({"run", "comb-drive", "--set", "analysis.type=\"pullin\""});
+  EXPECT_EQ(text.code, 0);
+  ExpectContains(text.out, "the combs' side instability");
+}
+
+// A comb beside an electrode under the whole device, or beside the Casimir pressure: the
+// device's in-plane motion (the comb's) and its motion across the substrate (the pressures')
+// are decoupled in the linear theory, so each transducer's result is the one it gives alone, to
+// the Newton statics' tolerance (1e-8 asserted): the engagement and side instability of the
+// comb alone, the deflection and the pull-in voltage of the electrode with the comb at 0 V.
+TEST(CombDriveCliTest, CombsActBesideElectrodesAndSurfaceForces) {
+  const TempDirectory dir;
+  const std::string driven = (dir.path() / "driven.toml").string();
+  const std::string idle = (dir.path() / "idle.toml").string();
+  WriteFile(driven, kDrivenFlexure);
+  std::string text = kDrivenFlexure;
+  text.replace(text.find("voltage = 30.0"), 14, "voltage = 0.0");
+  WriteFile(idle, text);
+  const std::vector<std::string> electrode = {"--set", "structure.gap=2e-6", "--set",
+                                              "effects.electrostatic.voltage=5.0"};
+  const auto run = [](const std::string& scene, std::vector<std::string> more) {
+    more.insert(more.begin(), scene);
+    return RunJson(more);
+  };
+  const auto near = [](const nlohmann::json& a, const nlohmann::json& b, double tolerance) {
+    EXPECT_NEAR(a.get<double>(), b.get<double>(), tolerance * std::abs(b.get<double>()));
+  };
+  const nlohmann::json comb = run(driven, {});
+  const nlohmann::json both = run(driven, electrode);
+  const nlohmann::json plate = run(idle, electrode);
+  ASSERT_EQ(both["status"], "ok");
+  ASSERT_EQ(plate["status"], "ok");
+  near(both["combs"][0]["engagement_m"], comb["combs"][0]["engagement_m"], 1e-8);
+  near(both["side_instability_voltage_v"][0], comb["side_instability_voltage_v"][0], 1e-8);
+  near(both["bodies"]["shuttle"]["displacement"][1], plate["bodies"]["shuttle"]["displacement"][1],
+       1e-8);
+  EXPECT_LT(both["bodies"]["shuttle"]["displacement"][1].get<double>(), 0.0);
+  near(both["capacitance_f"]["electrostatic"], plate["capacitance_f"]["electrostatic"], 1e-8);
+  near(both["capacitance_f"]["combs"][0], comb["capacitance_f"]["combs"][0], 1e-8);
+
+  std::vector<std::string> pullin = electrode;
+  pullin.insert(pullin.end(), {"--set", "analysis.type=\"pullin\""});
+  const nlohmann::json folded = run(driven, pullin);
+  const nlohmann::json alone = run(idle, pullin);
+  ASSERT_EQ(folded["status"], "ok");
+  near(folded["pullin_voltage_v"], alone["pullin_voltage_v"], 1e-8);
+  EXPECT_EQ(folded["pullin_instability"], "limit_point");
+  near(folded["side_instability_voltage_v"][0], comb["side_instability_voltage_v"][0], 1e-12);
+
+  const nlohmann::json casimir =
+      run(driven, {"--set", "structure.gap=0.2e-6", "--set", "effects.casimir.enabled=true"});
+  ASSERT_EQ(casimir["status"], "ok");
+  near(casimir["combs"][0]["engagement_m"], comb["combs"][0]["engagement_m"], 1e-8);
+  near(casimir["side_instability_voltage_v"][0], comb["side_instability_voltage_v"][0], 1e-8);
+  EXPECT_LT(casimir["bodies"]["shuttle"]["displacement"][1].get<double>(), 0.0);
+}
+
 TEST(CombDriveCliTest, CombsWhereTheyCannotActAreRefused) {
   const TempDirectory dir;
   // The driven flexure with `from` replaced by `to`, run.
@@ -144,7 +223,7 @@ TEST(CombDriveCliTest, CombsWhereTheyCannotActAreRefused) {
                  "effects.combs[0].direction");
   ExpectContains(refusal("fingers = 20", "fingers = 0"), "effects.combs[0].fingers");
   ExpectContains(refusal("type = \"static\"", "type = \"modal\""),
-                 "a comb drive acts in the \"static\" analysis");
+                 "a comb drive acts in the \"static\" and \"pullin\" analyses");
   ExpectContains(refusal("voltage = 30.0", "voltage = 30.0\nac_voltage = 1.0\nfrequency = 1e5"),
                  "effects.combs[0].ac_voltage");
   ExpectContains(refusal("type = \"static\"",

@@ -89,9 +89,6 @@ TEST(DeviceSurfaceCliTest, SurfaceForcesWhereTheyCannotActAreRefused) {
   ExpectContains(
       InvalidInput({"run", "serpentine-pullin", "--set", "effects.van_der_waals.enabled=true"}),
       "effects.van_der_waals");
-  ExpectContains(InvalidInput({"run", "comb-drive", "--set", "structure.gap=2e-6", "--set",
-                               "effects.casimir.enabled=true"}),
-                 "effects.combs[0]");
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"modal\"",
                                "--set", "effects.electrostatic.enabled=false", "--set",
                                "effects.casimir.enabled=true"}),

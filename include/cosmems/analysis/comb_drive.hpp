@@ -1,9 +1,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/time/voltage_drive.hpp"
@@ -57,15 +59,30 @@ struct CombDrive {
   Eigen::Vector3d Lateral() const { return Eigen::Vector3d::UnitY().cross(Axis()); }
   /// N eps0 t / gap: the engagement force per volt squared [N/V^2].
   double ForcePerVoltSquared() const { return fingers * kVacuumPermittivity * thickness / gap; }
-  /// The engagement force at `v` volts [N].
-  double Force(double v) const { return ForcePerVoltSquared() * v * v; }
-  /// The capacitance at engagement x [m] (no less than zero: fingers pulled apart) [F].
-  double Capacitance(double x) const {
-    return 2.0 * fingers * kVacuumPermittivity * thickness * std::max(overlap + x, 0.0) / gap;
+  /// The engagement force at `v` volts [N] with the fingers y [m] off centre (|y| < gap):
+  /// V^2 dC/dx / 2 = N eps0 t V^2 (1/(gap - y) + 1/(gap + y)) / 2.
+  double Force(double v, double y = 0.0) const {
+    return 0.5 * ForcePerVoltSquared() * gap * v * v * (1.0 / (gap - y) + 1.0 / (gap + y));
+  }
+  /// The capacitance [F] at engagement x [m] with the movable fingers moved y [m] across them
+  /// (toward one fixed neighbour, away from the other): N eps0 t (overlap + x) (1/(gap - y) +
+  /// 1/(gap + y)), no less than zero (fingers pulled apart). Needs |y| < gap.
+  double Capacitance(double x, double y = 0.0) const {
+    return fingers * kVacuumPermittivity * thickness * std::max(overlap + x, 0.0) *
+           (1.0 / (gap - y) + 1.0 / (gap + y));
   }
   /// The electrostatic negative stiffness across the fingers at `v` volts and engagement x
   /// [N/m]: C(x) V^2 / gap^2.
   double SideStiffness(double v, double x) const { return Capacitance(x) * v * v / (gap * gap); }
 };
+
+/// Throws std::invalid_argument for a comb CombDrive::Validate() refuses or one whose body is
+/// not among a structure's `bodies`.
+inline void ValidateCombDrives(const std::vector<CombDrive>& combs, int bodies) {
+  for (const CombDrive& comb : combs) {
+    comb.Validate();
+    if (comb.body >= bodies) throw std::invalid_argument("comb drive: names no body");
+  }
+}
 
 }  // namespace cosmems
