@@ -218,6 +218,39 @@ TEST(CombDriveTest, FingersPushedOffCentrePullTheShuttleFurther) {
   EXPECT_NEAR(s.combs[0].force_n, f.Comb(v).Force(v, xy[1]), 1e-12 * s.combs[0].force_n);
 }
 
+// Under the "stretching" theory the suspension softens across the fingers as the comb pulls the
+// shuttle along them. At a constant engagement force each clamped-guided beam, swayed by
+// d = x/2, adds to its axial compliance L/EA what its sway's foreshortening gives back under an
+// axial load, d^2 L/EI (3/25 + 1/700): 3/25 from the load's geometric stiffness 6P/5L, which
+// changes the sway the constant force holds, and 1/700 the elastokinematic term at a fixed sway
+// (Awtar's beam constraint model). Two beams in series in each of four folds give
+// k_z(x) = 2 / (L/EA + (x/2)^2 L/EI (3/25 + 1/700)), and the side instability lies where
+// 2 q V^2 (L0 + x) / g^3 = k_z(x) at x = q V^2 / (g k_x), found here by bisection. The closed
+// form is first order in the sway (x/2L = 0.065 there): 1 % asserted.
+TEST(CombDriveTest, StretchingSoftensTheSuspensionAcrossTheFingers) {
+  const DrivenFlexure f;
+  const FrameModel model(f.structure, FrameCouplings::kStretching);
+  FrameStretchingForce stretching(model);
+  const CombDriveSolution s = SolveCombDrives(model, {}, {f.Comb(30.0)}, {&stretching});
+  ASSERT_EQ(s.statics.status, Status::kOk);
+  const double e = f.design.material.young_modulus, w = f.design.beam_width;
+  const double t = f.design.thickness, l = f.design.beam_length;
+  const double ea = e * w * t, ei = e * t * w * w * w / 12.0;
+  const double q = 20 * kEps0 * t, g = 2e-6, overlap = 10e-6;
+  const auto excess = [&](double v) {
+    const double x = q * v * v / (g * f.kx), sway = 0.5 * x;
+    const double kz = 2.0 / (l / ea + sway * sway * l / ei * (3.0 / 25.0 + 1.0 / 700.0));
+    return 2 * q * v * v * (overlap + x) / (g * g * g) - kz;
+  };
+  double lo = 1.0, hi = LegtenbergVoltage(f);
+  while (hi - lo > 1e-9 * hi) (excess(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+  const double voltage = s.combs[0].side_instability_voltage_v;
+  std::printf("side instability under stretching: %.6g V, first-order closed form %.6g V\n",
+              voltage, lo);
+  EXPECT_NEAR(voltage, lo, 1e-2 * lo);
+  EXPECT_LT(voltage, 0.5 * LegtenbergVoltage(f));
+}
+
 TEST(CombDriveTest, BadCombsAreRefused) {
   const DrivenFlexure f;
   const FrameModel model(f.structure);

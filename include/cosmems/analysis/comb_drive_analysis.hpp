@@ -156,9 +156,32 @@ inline CombDriveSolution SolveLinearCombDrives(const FrameModel& model, const Fr
   return out;
 }
 
-// The same under nonlinear forces (CombDriveForce beside `forces` and the ramped `electrodes`):
-// Newton's statics, and the side instability as the lowest factor whose equilibrium is lost or
-// whose tangent K + dr/dd is not positive definite, bisected to 1e-10 of itself.
+// The combs' pull and the electrodes' pressure as the one force that Newton's statics ramp with
+// the loads: both grow with V^2 from nothing. Held whole from the first iterate, a comb's force
+// leaves Newton far from the equilibrium of a structure its other forces stiffen or soften, and
+// a failed solve would read as an instability.
+class RampedTransducers final : public FrameElementForce {
+ public:
+  RampedTransducers(CombDriveForce& combs, FrameElementForce* electrodes)
+      : combs_(combs), electrodes_(electrodes) {}
+
+  bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
+    return combs_.Evaluate(d, force, tangent) &&
+           (electrodes_ == nullptr || electrodes_->Evaluate(d, force, tangent));
+  }
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const override {
+    return electrodes_ != nullptr ? electrodes_->LocalForce(d, e)
+                                  : FrameModel::ElementVector::Zero();
+  }
+
+ private:
+  CombDriveForce& combs_;
+  FrameElementForce* electrodes_;
+};
+
+// The same under nonlinear forces (CombDriveForce beside `forces`, ramped with the loads and the
+// `electrodes`): Newton's statics, and the side instability as the lowest factor whose equilibrium
+// is lost or whose tangent K + dr/dd is not positive definite, bisected to 1e-10 of itself.
 inline CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model,
                                                   const FrameLoadCase& loads,
                                                   const std::vector<CombDrive>& declared,
@@ -166,11 +189,15 @@ inline CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model,
                                                   FrameElementForce* electrodes) {
   CombDriveSolution out;
   CombDriveForce pull(model, ScaledCombs(declared));
+  RampedTransducers ramped(pull, electrodes);
   std::vector<FrameElementForce*> all = forces;
-  all.push_back(&pull);
+  all.push_back(&ramped);
+  // Each factor's Newton starts from the last stable state found (from rest at first): near
+  // it, one load step instead of a ramp.
+  NonlinearStaticOptions options;
   const auto solve = [&](double factor) {
     pull.SetVoltageFactor(factor);
-    return SolveFrameNonlinearStatic(model, all, loads, electrodes);
+    return SolveFrameNonlinearStatic(model, forces, loads, &ramped, options);
   };
   out.statics = solve(AnyCombVoltage(declared) ? 1.0 : 0.0);
   if (out.statics.status != Status::kOk || declared.empty()) return out;
@@ -198,9 +225,6 @@ inline CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model,
     for (FrameElementForce* force : all) {
       if (!force->Evaluate(candidate.displacement, r, tangent)) return false;
     }
-    if (electrodes != nullptr) {
-      if (!electrodes->Evaluate(candidate.displacement, r, tangent)) return false;
-    }
     jacobian.mutable_data() = model.Stiffness().data() + tangent.band().data();
     if (factor.Compute(jacobian, tangent.rank_one_scale(), tangent.rank_one_vector()) !=
         Status::kOk) {
@@ -208,6 +232,7 @@ inline CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model,
     }
     out.last_stable = std::move(candidate);
     out.last_stable_factor = s;
+    options.start = out.last_stable.displacement;
     return true;
   };
   double lo = 0.0;
@@ -223,9 +248,9 @@ inline CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model,
 /// across their fingers. When every comb is at 0 V the factor scales 1 V on each. With no other
 /// force (`forces` empty, no `electrodes`) the statics are linear and the combs' forces loads,
 /// the instability in closed form (internal::SolveLinearCombDrives); otherwise the combs are a
-/// CombDriveForce in Newton's statics, beside `forces` and the electrodes' pressure ramped with
-/// the loads (SolveFrameNonlinearStatic), and the instability is bisected on the tangent's
-/// definiteness. Statuses as SolveFrameStatic's and SolveFrameNonlinearStatic's.
+/// CombDriveForce in Newton's statics beside `forces`, ramped with the loads together with the
+/// electrodes' pressure (SolveFrameNonlinearStatic), and the instability is bisected on the
+/// tangent's definiteness. Statuses as SolveFrameStatic's and SolveFrameNonlinearStatic's.
 inline CombDriveSolution SolveCombDrives(const FrameModel& model, const FrameLoadCase& loads,
                                          const std::vector<CombDrive>& combs,
                                          const std::vector<FrameElementForce*>& forces = {},
