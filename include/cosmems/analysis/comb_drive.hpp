@@ -53,8 +53,10 @@ struct CombDrive {
   }
   /// The voltage in time.
   VoltageDrive Drive() const { return {voltage, ac_voltage, frequency_hz}; }
-  /// The unit engagement direction.
-  Eigen::Vector3d Axis() const { return direction.normalized(); }
+  /// The unit engagement direction, in the substrate plane (Validate() allows a y of round-off).
+  Eigen::Vector3d Axis() const {
+    return Eigen::Vector3d(direction.x(), 0.0, direction.z()).normalized();
+  }
   /// The unit direction across the fingers, in the plane: y x Axis().
   Eigen::Vector3d Lateral() const { return Eigen::Vector3d::UnitY().cross(Axis()); }
   /// N eps0 t / gap: the engagement force per volt squared [N/V^2].

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "cosmems/analysis/comb_drive.hpp"
@@ -65,14 +66,17 @@ class CombDriveForce final : public FrameElementForce {
       const Eigen::Matrix3d hessian =
           (cross * (a * l.transpose() + l * a.transpose()) + gyy * l * l.transpose()) *
           (length_m / force_n);
+      // In the plane: u_x and u_z (u_y lies in another block of the band when the frame is
+      // numbered for the linear couplings).
       const int carrier = model_.mesh().body_carrier[comb.body];
-      for (int i = 0; i < 3; ++i) {
-        const int row = model_.CarrierDof(carrier, i);
+      constexpr std::array<int, 2> kInPlane = {0, 2};
+      for (std::size_t i = 0; i < kInPlane.size(); ++i) {
+        const int row = model_.CarrierDof(carrier, kInPlane[i]);
         if (row < 0) continue;
-        force[row] -= pull[i];
-        for (int j = i; j < 3; ++j) {
-          const int column = model_.CarrierDof(carrier, j);
-          if (column >= 0) tangent.band().Add(row, column, -hessian(i, j));
+        force[row] -= pull[kInPlane[i]];
+        for (std::size_t j = i; j < kInPlane.size(); ++j) {
+          const int column = model_.CarrierDof(carrier, kInPlane[j]);
+          if (column >= 0) tangent.band().Add(row, column, -hessian(kInPlane[i], kInPlane[j]));
         }
       }
     }

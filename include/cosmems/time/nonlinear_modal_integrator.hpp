@@ -293,10 +293,13 @@ class NonlinearModalIntegrator {
         jacobian_(i, j) = value;
       }
     }
-    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(jacobian_);  // in place: allocates nothing
-    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
-    llt.solveInPlace(residual_);
-    return Status::kOk;
+    // In place and unblocked: the blocked factorisation Eigen's LLT takes above 32 rows updates
+    // its trailing blocks by matrix products whose workspace, past about 400 rows, comes from
+    // the heap. The column by column one needs matrix-vector products only.
+    if (Eigen::internal::llt_inplace<double, Eigen::Lower>::unblocked(jacobian_) >= 0) {
+      return Status::kNotPositiveDefinite;
+    }
+    return SolveKept();
   }
 
   // The rounding error of G^-1 d, whose entries each sum n products (Higham 3.5); scratch_ holds
