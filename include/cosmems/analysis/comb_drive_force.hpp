@@ -34,8 +34,6 @@ class CombDriveForce final : public FrameElementForce {
 
   /// Scales every comb's voltage by `factor` from now on (1 at construction).
   void SetVoltageFactor(double factor) { factor_ = factor; }
-  double voltage_factor() const { return factor_; }
-  const std::vector<CombDrive>& combs() const { return combs_; }
 
   /// Comb c's engagement x and offset y across its fingers [m] at d.
   Eigen::Vector2d Motion(const Eigen::VectorXd& d, int c) const {
