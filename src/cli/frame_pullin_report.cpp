@@ -86,6 +86,14 @@ std::unique_ptr<FramePullInReport> FramePullInReport::Run(const Scene& scene) {
   } else {
     result = CombPullIn(model, driven, combs);
     gap = combs.front().gap;
+    const std::optional<double>& most = scene.analysis.voltage_max;
+    if (result.fold.status == Status::kOk && most && result.fold.voltage_v > *most) {
+      result = FramePullInResult{};  // ToPullInResults says why
+      result.fold.status = Status::kNotConverged;
+    } else if (result.fold.status == Status::kNotConverged && !most) {
+      header.warnings.push_back(
+          "no side instability up to 1e6 times the combs' voltages: the suspension holds them");
+    }
   }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

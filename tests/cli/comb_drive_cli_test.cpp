@@ -154,6 +154,12 @@ TEST(CombDriveCliTest, APullInOfCombsAloneIsTheirSideInstability) {
       testing::Cli({"run", "comb-drive", "--set", "analysis.type=\"pullin\""});
   EXPECT_EQ(text.code, 0);
   ExpectContains(text.out, "the combs' side instability");
+  // Above analysis.voltage_max, none: not converged (exit 3), saying why.
+  const nlohmann::json bounded = RunJson(
+      {"comb-drive", "--set", "analysis.type=\"pullin\"", "--set", "analysis.voltage_max=1000.0"},
+      3);
+  EXPECT_EQ(bounded["status"], "not converged");
+  ExpectContains(bounded["warnings"][0], "no pull-in below analysis.voltage_max = 1000 V");
 }
 
 // A comb beside an electrode under the whole device, or beside the Casimir pressure: the
