@@ -35,7 +35,7 @@ void BM_PacedHapticRun(benchmark::State& state) {
       "cantilever-haptic",
       {SceneOverride::Parse("analysis.duration=10"), SceneOverride::Parse("device.realtime=true")});
   for (auto _ : state) {
-    HapticSession<2> session(scene, OpenDevice(scene));
+    HapticSession session(scene, OpenDevice(scene));
     session.Start();
     session.opened().scripted->WaitUntilDone();
     session.Stop();

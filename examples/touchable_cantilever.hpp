@@ -9,6 +9,7 @@
 
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/force_tuple.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
@@ -42,10 +43,10 @@ class TouchableCantilever {
     options.scaling.device_origin_m =
         -options.scaling.position_scale *
         Eigen::Vector3d(kLength, 0.5 * kThickness + probe.radius + kGap, 0.0);
-    loop_ = std::make_unique<HapticLoop<2>>(*beam_, options);
+    loop_ = std::make_unique<HapticLoop>(*beam_, options);
   }
 
-  HapticLoop<2>& loop() { return *loop_; }
+  HapticLoop& loop() { return *loop_; }
 
  private:
   static ContactOptions Contact() {
@@ -60,7 +61,7 @@ class TouchableCantilever {
   BeamModel<2> model_;
   ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces_;
   std::unique_ptr<HapticBeam<2>> beam_;
-  std::unique_ptr<HapticLoop<2>> loop_;
+  std::unique_ptr<HapticLoop> loop_;
 };
 
 }  // namespace cosmems::example

@@ -68,6 +68,7 @@
 #include "cosmems/rod/so3.hpp"
 #include "cosmems/structure/accelerometer.hpp"
 #include "cosmems/structure/crab_leg.hpp"
+#include "cosmems/structure/dof_weights.hpp"
 #include "cosmems/structure/folded_flexure.hpp"
 #include "cosmems/structure/frame_element_force.hpp"
 #include "cosmems/structure/frame_mesh.hpp"

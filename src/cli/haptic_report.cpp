@@ -38,16 +38,17 @@ void RunSession(const Scene& scene, const OpenedDevice& opened) {
   }
 }
 
-template <int Dim>
-std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
+}  // namespace
+
+std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   const SceneDevice device_scene = scene.device.value_or(SceneDevice{});
   RunHeader header = RunHeader::Start(scene);
   const auto start = std::chrono::steady_clock::now();
-  HapticSession<Dim> session(scene, OpenDevice(scene));
+  HapticSession session(scene, OpenDevice(scene));
   const OpenedDevice& opened = session.opened();
   HapticDevice& device = session.device();
   const HapticSettings& settings = session.settings();
-  HapticLoop<Dim>& loop = session.loop();
+  HapticLoop& loop = session.loop();
 
   HapticResults r;
   r.device_model = device.specs().model;
@@ -58,7 +59,7 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
   session.Stop();
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  header.dofs = session.model().FreeDofCount();
+  header.dofs = session.physics().DofCount();
   r.servo = device.stats();
   r.physics = loop.physics_stats();
   r.failed_physics_ticks = loop.failed_ticks();
@@ -105,12 +106,6 @@ std::unique_ptr<HapticReport> RunHaptic(const Scene& scene) {
     header.warnings.push_back("not real-time: " + r.realtime_note);
   }
   return std::make_unique<HapticReport>(std::move(header), std::move(r));
-}
-
-}  // namespace
-
-std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
-  return scene.model.dimension == 2 ? RunHaptic<2>(scene) : RunHaptic<3>(scene);
 }
 
 void HapticReport::AddResults(nlohmann::ordered_json& json) const {

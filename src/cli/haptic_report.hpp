@@ -35,13 +35,14 @@ struct HapticResults {
   std::vector<ScriptedSample> forces;  ///< scripted: every tick, stylus and the force sent to it
 };
 
-/// A stylus touching the beam: a ScriptedDevice replaying [device].trajectory at the analysis
-/// rate, or an OpenHapticsDevice (a PHANTOM Omni or Touch) for analysis.duration (30 s when not
-/// given); a HapticLoop runs the beam (HapticBeam: the scene's effects plus the probe) and renders
-/// the force through the safety layer. The scripted stylus with realtime = true, and every real
-/// device, pace the ticks on the wall clock with the physics on its own thread; the scripted
-/// stylus with realtime = false runs them as fast as possible with the physics inside each tick,
-/// deterministically, and its ticks go to device_forces.csv in --out.
+/// A stylus touching the beam or the device: a ScriptedDevice replaying [device].trajectory at the
+/// analysis rate, or an OpenHapticsDevice (a PHANTOM Omni or Touch) for analysis.duration (30 s
+/// when not given); a HapticLoop runs its physics (HapticBeam or HapticStructure: the scene's
+/// effects plus the probe) and renders the force through the safety layer. The scripted stylus
+/// with realtime = true, and every real device, pace the ticks on the wall clock with the physics
+/// on its own thread; the scripted stylus with realtime = false runs them as fast as possible
+/// with the physics inside each tick, deterministically, and its ticks go to device_forces.csv in
+/// --out.
 class HapticReport final : public AnalysisReport {
  public:
   HapticReport(RunHeader header, HapticResults results)

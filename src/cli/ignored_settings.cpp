@@ -5,16 +5,16 @@
 namespace cosmems::internal {
 namespace {
 
-// The haptic analysis touches the beam with the probe alone (HapticSession builds the HapticBeam
-// without loads); only its modal integrator takes the damping, as the modes' ratios.
+// The haptic analysis touches the structure with the probe alone (HapticSession builds its
+// physics without loads); only its modal integrator takes the damping, as the modes' ratios.
 void AddHapticWarnings(const Scene& scene, const std::string& unchanged,
                        std::vector<std::string>& warnings) {
-  if (!MakeLoadCase(scene).Empty()) {
-    warnings.push_back("loads" + unchanged + "the hand's probe is the only load on the beam");
+  if (!MakeLoadCase(scene).Empty() || !scene.loads.points.empty()) {
+    warnings.push_back("loads" + unchanged + "the hand's probe is the only load on the structure");
   }
   if (IsOn(scene.effects.damping) && scene.analysis.integrator != Integrator::kModal) {
     warnings.push_back("effects.damping" + unchanged +
-                       "the touched beam is damped by the squeeze film only (the tick's "
+                       "the touched structure is damped by the squeeze film only (the tick's "
                        "integrator removes the vibrations it does not resolve; the modal "
                        "integrator takes it)");
   }

@@ -48,9 +48,10 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs the static, modal, buckling, transient and pull-in analyses (the scene reader
-  // refuses the others).
+  // A device runs the static, modal, buckling, transient, pull-in and haptic analyses (the scene
+  // reader refuses the others).
   if (IsDevice(scene.structure.kind)) {
+    if (scene.analysis.type == AnalysisType::kHaptic) return internal::HapticReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kPullin)
       return internal::FramePullInReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);

@@ -455,6 +455,8 @@ void VisitDevice(V& v, SceneDevice& d) {
            "25 times the structure's stiffness under the probe", "the stylus-probe spring, N/m");
   v.Number("probe_radius", d.probe_radius, Positive(kLength), "the thickness",
            "the stylus tip's radius");
+  v.OptionalText("target", d.target, "a device's first body",
+                 "the device's node or body the built-in motions press (devices only)");
 }
 
 }  // namespace cosmems::internal

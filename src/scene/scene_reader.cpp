@@ -336,9 +336,13 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
 }
 
 // The haptic analysis touches the full model, or its modes with analysis.integrator = "modal"
-// (the Cosserat rod is refused in CheckCosserat).
+// (the Cosserat rod is refused in CheckCosserat); a device is pressed at its device.target
+// (CheckDevice).
 void CheckHaptic(const TomlFieldReader& r, const Scene& scene) {
   if (scene.analysis.type != AnalysisType::kHaptic) return;
+  r.Require(IsDevice(scene.structure.kind) || !scene.device || !scene.device->target,
+            "device.target",
+            "names a device's node or body; a beam is pressed at its tip or its midspan");
   if (scene.analysis.integrator == Integrator::kModal) {
     r.Require(scene.model.modes >= 1, "model.modes",
               "analysis.integrator = \"modal\" needs at least one mode");
@@ -404,11 +408,12 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling, transient
-// and pull-in analyses, linear or with its members' stretching; of the effects through the
-// substrate it takes the electrodes, the Casimir and van der Waals pressures and the gas film
-// (CheckSurface says where each acts); contact and stiction act on a cantilever or a bridge. Its
-// netlist must be sound, and its loads and recorded points must name its nodes and bodies.
+// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling,
+// transient, pull-in and haptic analyses, linear or with its members' stretching; of the effects
+// through the substrate it takes the electrodes, the Casimir and van der Waals pressures and the
+// gas film (CheckSurface says where each acts); contact and stiction act on a cantilever or a
+// bridge. Its netlist must be sound, and its loads and recorded points must name its nodes and
+// bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
@@ -416,11 +421,11 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   const AnalysisType type = scene.analysis.type;
   r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
                 type == AnalysisType::kBuckling || type == AnalysisType::kTransient ||
-                type == AnalysisType::kPullin,
+                type == AnalysisType::kPullin || type == AnalysisType::kHaptic,
             "analysis.type",
             kind +
-                " runs the \"static\", \"modal\", \"buckling\", \"transient\" and \"pullin\" "
-                "analyses");
+                " runs the \"static\", \"modal\", \"buckling\", \"transient\", \"pullin\" "
+                "and \"haptic\" analyses");
   r.Require(type != AnalysisType::kBuckling || !scene.loads.points.empty() ||
                 !scene.loads.distributed.isZero(0.0),
             "analysis.type",
@@ -472,14 +477,24 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
     const SceneComb& comb = scene.effects.combs[i];
     const std::string entry = "effects.combs[" + std::to_string(i) + "]";
     r.Require(type == AnalysisType::kStatic || type == AnalysisType::kPullin ||
-                  type == AnalysisType::kTransient,
+                  type == AnalysisType::kTransient || type == AnalysisType::kHaptic,
               entry,
               "a comb drive acts in the \"static\" and \"pullin\" analyses (its force, "
-              "capacitance and side instability) and drives a \"transient\"");
+              "capacitance and side instability), drives a \"transient\" and pulls under the "
+              "stylus in a \"haptic\" one");
     CheckAlternatingVoltage(r, entry, comb.ac_voltage, comb.frequency, type);
     r.Require(structure.FindBody(comb.body) >= 0, entry + ".body", "no body \"" + comb.body + "\"");
     r.Require(comb.direction.y() == 0.0 && !comb.direction.isZero(0.0), entry + ".direction",
               "must be a non-zero direction in the substrate plane (y = 0)");
+  }
+  if (type == AnalysisType::kHaptic) {
+    const std::optional<std::string> target = scene.device ? scene.device->target : std::nullopt;
+    r.Require(target.has_value() || !structure.bodies.empty(), "device.target",
+              kind + " has no body: name the node the built-in motions press");
+    if (target) {
+      r.Require(structure.FindNode(*target) >= 0 || structure.FindBody(*target) >= 0,
+                "device.target", "no node or body \"" + *target + "\"");
+    }
   }
   if (type != AnalysisType::kTransient) return;
   const std::vector<std::string>& record = scene.analysis.record;

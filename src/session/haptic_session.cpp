@@ -1,10 +1,18 @@
 #include "cosmems/session/haptic_session.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "cosmems/analysis/comb_drive_force.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
+#include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 
 namespace cosmems {
@@ -59,23 +67,71 @@ OpenedDevice OpenDevice(const Scene& scene) {
   return out;
 }
 
-template <int Dim>
-HapticSession<Dim>::HapticSession(const Scene& scene, OpenedDevice device,
-                                  HapticPhysicsOptions physics)
-    : opened_(std::move(device)),
-      model_(MakeBeamDescription(scene), Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField),
-      forces_(model_, scene),
-      beam_(model_, opened_.settings.probe, forces_.All(), forces_.contact(),
-            AtSceneRate(scene, physics)),
-      loop_(beam_, LoopOptions(opened_)) {}
+struct HapticSession::Touched {
+  virtual ~Touched() = default;
+  virtual HapticPhysics& physics() = 0;
+};
+
+namespace {
 
 template <int Dim>
-HapticSession<Dim>::~HapticSession() {
-  Stop();
+struct TouchedBeam final : HapticSession::Touched {
+  TouchedBeam(const Scene& scene, const ProbeOptions& probe, const HapticPhysicsOptions& options)
+      : model(MakeBeamDescription(scene),
+              Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField),
+        forces(model, scene),
+        beam(model, probe, forces.All(), forces.contact(), options) {}
+  HapticPhysics& physics() override { return beam; }
+
+  BeamModel<Dim> model;
+  SceneForces<Dim> forces;
+  HapticBeam<Dim> beam;
+};
+
+// A device with every effect its scene declares: the substrate's (FrameSceneForces) and its
+// transducers at their voltages, electrodes and combs, which the hand feels pull.
+struct TouchedDevice final : HapticSession::Touched {
+  TouchedDevice(const Scene& scene, const ProbeOptions& probe, const HapticPhysicsOptions& options)
+      : model(MakeStructureDescription(scene), MakeFrameCouplings(scene)), forces(model, scene) {
+    all.Add(forces.all());
+    if (IsOn(scene.effects.electrostatic)) {
+      all.Add(electrodes.emplace(MakeFrameElectrostaticForce(
+          model, MakeFramePullInOptions(scene), *scene.effects.electrostatic->voltage)));
+    }
+    if (!scene.effects.combs.empty()) {
+      all.Add(combs.emplace(model, MakeCombDrives(scene, model.description())));
+    }
+    structure.emplace(model, probe, &all, options);
+  }
+  HapticPhysics& physics() override { return *structure; }
+
+  FrameModel model;
+  FrameSceneForces forces;
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrodes;
+  std::optional<CombDriveForce> combs;
+  ForceSum all;
+  std::optional<HapticStructure> structure;
+};
+
+std::unique_ptr<HapticSession::Touched> MakeTouched(const Scene& scene, const ProbeOptions& probe,
+                                                    const HapticPhysicsOptions& options) {
+  if (IsDevice(scene.structure.kind)) return std::make_unique<TouchedDevice>(scene, probe, options);
+  if (scene.model.dimension == 2) return std::make_unique<TouchedBeam<2>>(scene, probe, options);
+  return std::make_unique<TouchedBeam<3>>(scene, probe, options);
 }
 
-template <int Dim>
-void HapticSession<Dim>::Start() {
+}  // namespace
+
+HapticSession::HapticSession(const Scene& scene, OpenedDevice device, HapticPhysicsOptions physics)
+    : opened_(std::move(device)),
+      touched_(MakeTouched(scene, opened_.settings.probe, AtSceneRate(scene, physics))),
+      loop_(touched_->physics(), LoopOptions(opened_)) {}
+
+HapticSession::~HapticSession() { Stop(); }
+
+const HapticPhysics& HapticSession::physics() const { return touched_->physics(); }
+
+void HapticSession::Start() {
   loop_.StartPhysics();
   if (opened_.device->Start(loop_) != DeviceStatus::kOk) {
     loop_.StopPhysics();
@@ -85,13 +141,9 @@ void HapticSession<Dim>::Start() {
   }
 }
 
-template <int Dim>
-void HapticSession<Dim>::Stop() {
+void HapticSession::Stop() {
   opened_.device->Stop();
   loop_.StopPhysics();
 }
-
-template class HapticSession<2>;
-template class HapticSession<3>;
 
 }  // namespace cosmems

@@ -1,5 +1,6 @@
 #include "cosmems/session/haptic_settings.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -7,8 +8,11 @@
 
 #include "cosmems/core/validation.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
+#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/csv_trajectory.hpp"
+#include "cosmems/structure/frame_model.hpp"
 
 namespace cosmems {
 namespace {
@@ -21,13 +25,67 @@ std::string FiveDigits(double value) {
   return out.str();
 }
 
-// The free structure's stiffness under the probe's start point: 3EI/L^3 at a cantilever's tip,
-// 192EI/L^3 at a bridge's midspan.
-double StructureStiffness(const Scene& scene) {
+// What the built-in motions press: the upper face's point they press at [m], the thickness
+// there [m] and the free structure's stiffness under a press there [N/m].
+struct PressedPoint {
+  Eigen::Vector3d face_m = Eigen::Vector3d::Zero();
+  double thickness_m = 0.0;
+  double stiffness_n_per_m = 0.0;
+};
+
+// A beam's: the cantilever's tip (3EI/L^3) or the bridge's midspan (192EI/L^3).
+PressedPoint BeamPoint(const Scene& scene) {
   const SceneStructure& s = scene.structure;
   const double ei = scene.material.young_modulus * s.width * std::pow(s.thickness, 3) / 12.0;
-  const double factor = s.kind == StructureKind::kCantilever ? 3.0 : 192.0;
-  return factor * ei / std::pow(s.length, 3);
+  const bool cantilever = s.kind == StructureKind::kCantilever;
+  PressedPoint out;
+  out.face_m = Eigen::Vector3d(cantilever ? s.length : 0.5 * s.length, 0.5 * s.thickness, 0.0);
+  out.thickness_m = s.thickness;
+  out.stiffness_n_per_m = (cantilever ? 3.0 : 192.0) * ei / std::pow(s.length, 3);
+  return out;
+}
+
+// A device's device.target (default: its first body): the body's upper face over its centre, or
+// the upper face of the members at the node; the stiffness 1 / (f^T K^-1 f) of the linear frame
+// under a unit force f toward the substrate there.
+PressedPoint DevicePoint(const Scene& scene) {
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure);
+  const std::string target =
+      scene.device.value_or(SceneDevice{})
+          .target.value_or(structure.bodies.empty() ? std::string()
+                                                    : structure.bodies.front().name);
+  const int body = structure.FindBody(target);
+  const int node = structure.FindNode(target);
+  if (body < 0 && node < 0) {
+    throw std::invalid_argument("device.target: no node or body \"" + target + "\"");
+  }
+  PressedPoint out;
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.FreeDofCount());
+  FrameModel::Motion unit = FrameModel::Motion::Zero();
+  unit[1] = -1.0;
+  if (body >= 0) {
+    const StructureBody& b = structure.bodies[body];
+    out.thickness_m = b.size.y();
+    out.face_m = b.center + 0.5 * b.size.y() * Eigen::Vector3d::UnitY();
+    model.AddCarrierLoad(model.mesh().body_carrier[body], unit, f);
+  } else {
+    for (const StructureMember& m : structure.members) {
+      if (m.from == node || m.to == node)
+        out.thickness_m = std::max(out.thickness_m, m.section.thickness);
+    }
+    out.face_m = structure.nodes[node].position + 0.5 * out.thickness_m * Eigen::Vector3d::UnitY();
+    model.AddNodeLoad(node, unit, f);
+  }
+  Eigen::VectorXd u = f;
+  BandCholesky(model.Stiffness()).SolveInPlace(u);
+  const double compliance = f.dot(u) * model.units().length / model.units().force;  // m/N
+  if (!(compliance > 0.0)) {
+    throw std::invalid_argument("device.target = \"" + target +
+                                "\": a press there moves nothing (it is anchored)");
+  }
+  out.stiffness_n_per_m = 1.0 / compliance;
+  return out;
 }
 
 bool IsBuiltIn(const std::string& name) {
@@ -50,8 +108,9 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
   const SceneStructure& s = scene.structure;
   HapticSettings out;
   out.specs = specs;
-  const double k_structure = StructureStiffness(scene);
-  out.probe.radius = device.probe_radius.value_or(s.thickness);
+  const PressedPoint pressed = IsDevice(s.kind) ? DevicePoint(scene) : BeamPoint(scene);
+  const double k_structure = pressed.stiffness_n_per_m;
+  out.probe.radius = device.probe_radius.value_or(pressed.thickness_m);
   // 25 times the structure: the probe sinks 4 % of a press into the coupling, and the coupling,
   // the stiffest thing the hand can feel, stays within the device.
   out.probe.stiffness = device.coupling_stiffness.value_or(25.0 * k_structure);
@@ -68,10 +127,10 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
                                 FiveDigits(renderable) + " N/m the device renders stably");
   }
 
-  // The probe's start: clear of the face by the gap (or a thickness), over the tip or midspan.
-  const double clearance = s.gap.value_or(s.thickness);
-  const double x = s.kind == StructureKind::kCantilever ? s.length : 0.5 * s.length;
-  const Eigen::Vector3d start_micro(x, 0.5 * s.thickness + out.probe.radius + clearance, 0.0);
+  // The probe's start: clear of the pressed face by the gap (or a thickness).
+  const double clearance = s.gap.value_or(pressed.thickness_m);
+  const Eigen::Vector3d start_micro =
+      pressed.face_m + (out.probe.radius + clearance) * Eigen::Vector3d::UnitY();
   MotionShape shape;
   shape.depth_m = 2.2 * clearance * out.scaling.position_scale;
   // The sweep runs toward the start point along the beam, ending over it.

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "beam_mesh.hpp"
@@ -120,7 +121,15 @@ class ViewerApp {
     overrides.insert(overrides.end(), edits.begin(), edits.end());
     // Whatever analysis the scene declares, the viewer touches it.
     overrides.push_back({"analysis.type", "\"haptic\""});
-    return LoadScene(options_.scene, overrides);
+    Scene scene = LoadScene(options_.scene, overrides);
+    // It draws a beam; a device is touched from the command line.
+    if (IsDevice(scene.structure.kind)) {
+      throw std::invalid_argument(std::string("structure.kind = \"") +
+                                  ToString(scene.structure.kind) +
+                                  "\": the viewer draws a cantilever or a bridge; touch a device "
+                                  "with `cosmems run SCENE --set 'analysis.type=\"haptic\"'`");
+    }
+    return scene;
   }
 
   void StartSession(const Scene& scene) {

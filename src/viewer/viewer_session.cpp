@@ -8,10 +8,9 @@
 namespace cosmems::viewer {
 namespace {
 
-template <int Dim>
-class SessionOfDimension final : public ViewerSession {
+class RunningSession final : public ViewerSession {
  public:
-  SessionOfDimension(const Scene& scene, OpenedDevice device, const HapticPhysicsOptions& physics)
+  RunningSession(const Scene& scene, OpenedDevice device, const HapticPhysicsOptions& physics)
       : session_(scene, std::move(device), physics) {
     session_.Start();
   }
@@ -21,7 +20,7 @@ class SessionOfDimension final : public ViewerSession {
   void RequestReset() override { session_.loop().RequestReset(); }
   void Stop() override { session_.Stop(); }
   const OpenedDevice& opened() const override { return session_.opened(); }
-  int dofs() const override { return session_.model().FreeDofCount(); }
+  int dofs() const override { return session_.physics().DofCount(); }
   const LoopStats& physics_stats() const override { return session_.loop().physics_stats(); }
   std::uint64_t failed_ticks() const override { return session_.loop().failed_ticks(); }
 
@@ -32,20 +31,15 @@ class SessionOfDimension final : public ViewerSession {
   }
 
  private:
-  HapticSession<Dim> session_;
+  HapticSession session_;
 };
 
 std::unique_ptr<ViewerSession> StartOn(const Scene& scene, OpenedDevice device,
                                        const HapticPhysicsOptions& physics, Input input,
                                        LiveTrajectory* hand, std::string note) {
-  auto start = [&](auto session) -> std::unique_ptr<ViewerSession> {
-    session->SetInput(input, hand, std::move(note));
-    return session;
-  };
-  if (scene.model.dimension == 2) {
-    return start(std::make_unique<SessionOfDimension<2>>(scene, std::move(device), physics));
-  }
-  return start(std::make_unique<SessionOfDimension<3>>(scene, std::move(device), physics));
+  auto session = std::make_unique<RunningSession>(scene, std::move(device), physics);
+  session->SetInput(input, hand, std::move(note));
+  return session;
 }
 
 Scene WithBackend(const Scene& scene, DeviceBackend backend, bool realtime) {

@@ -3,8 +3,8 @@
 #include <memory>
 #include <string>
 
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_frame.hpp"
+#include "cosmems/haptics/haptic_physics.hpp"
 #include "cosmems/haptics/loop_stats.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scripted/live_trajectory.hpp"
@@ -23,7 +23,7 @@ enum class Input {
 /// "auto" | "mouse" | "script" | "omni".
 const char* ToString(Input input);
 
-/// A running haptic session of either dimension, as the display sees it: the newest frame, the
+/// A running haptic session, as the display sees it: the newest frame, the
 /// "Reset Failure" request, the device's figures and, with the mouse, the live hand.
 class ViewerSession {
  public:

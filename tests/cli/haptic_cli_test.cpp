@@ -114,6 +114,40 @@ TEST(HapticCliTest, TheOpenHapticsBackendRunsTheSceneForItsDuration) {
   }
 }
 
+// A device is touched as a beam is: the scripted stylus presses the shuttle of the folded
+// flexure (its first body) from above, or a node named by device.target.
+TEST(HapticCliTest, TheStylusPressesADevicesBodyOrNode) {
+  const std::vector<std::string> haptic = {"--set", "analysis.type=\"haptic\""};
+  std::vector<std::string> shuttle = Args({"folded-flexure"});
+  shuttle.insert(shuttle.end(), haptic.begin(), haptic.end());
+  const nlohmann::json json = RunJson(shuttle);
+  EXPECT_EQ(json.at("status"), "ok");
+  EXPECT_EQ(json.at("ticks").get<long>(), 2001);
+  EXPECT_EQ(json.at("physics").at("failed_ticks").get<long>(), 0);
+  const double limit = json.at("force_limit_n").get<double>();
+  EXPECT_LE(json.at("max_device_force_n").get<double>(), limit * (1 + 1e-12));
+  EXPECT_GT(json.at("max_device_force_n").get<double>(), 0.05 * limit);  // it was felt
+  // The coupling is 25 times the structure under the stylus: the shuttle's stiffness toward the
+  // substrate.
+  const double shuttle_coupling = json.at("scaling").at("coupling_stiffness_n_per_m").get<double>();
+  ExpectContains(json.at("warnings").dump(), "loads does not change a haptic analysis");
+  // A truss, nearer the anchors, is stiffer toward the substrate than the shuttle.
+  std::vector<std::string> truss = shuttle;
+  truss.insert(truss.end(), {"--set", "device.target=\"truss_high\""});
+  const nlohmann::json on_truss = RunJson(truss);
+  EXPECT_EQ(on_truss.at("physics").at("failed_ticks").get<long>(), 0);
+  EXPECT_GT(on_truss.at("scaling").at("coupling_stiffness_n_per_m").get<double>(),
+            shuttle_coupling);
+  ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "analysis.type=\"haptic\"",
+                               "--set", "device.target=\"anchor\""}),
+                 "device.target = \"anchor\": no node or body \"anchor\"");
+  ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "analysis.type=\"haptic\"",
+                               "--set", "device.target=\"anchor_left_low\""}),
+                 "device.target = \"anchor_left_low\": a press there moves nothing");
+  ExpectContains(InvalidInput({"run", "cantilever-haptic", "--set", "device.target=\"tip\""}),
+                 "device.target = \"tip\": names a device's node or body");
+}
+
 TEST(HapticCliTest, RefusesWhatItCannotDriveByName) {
   ExpectContains(
       InvalidInput(Args({"run", "cantilever-haptic", "--set", "device.force_scale=1e9"})),

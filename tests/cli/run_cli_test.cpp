@@ -457,7 +457,7 @@ TEST(RunCliTest, WarnsAboutSettingsTheHapticAnalysisIgnoresAndAStylusElsewhere) 
   ASSERT_EQ(warnings.size(), 3u) << warnings;
   EXPECT_EQ(warnings[0],
             "loads does not change a haptic analysis: the hand's probe is the only load on the "
-            "beam");
+            "structure");
   ExpectContains(warnings[1], "effects.damping does not change a haptic analysis: ");
   EXPECT_EQ(warnings[2],
             "loads.time_function = \"ramp\" does not change a haptic analysis: it sets how the "

@@ -13,18 +13,13 @@ namespace {
 using test::kProbeRadius;
 using test::kReferenceThickness;
 
-// The probe centre over the tip with its lowest point `depth` below the undeformed upper face.
-Eigen::Vector3d OverTip(double depth) {
-  return Eigen::Vector3d(test::kReferenceLength, 0.5 * kReferenceThickness - depth + kProbeRadius,
-                         0.0);
-}
-
 TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   const BeamModel<2> model = test::HapticCantilever();
   const double k_c = 5.0, k_tip = test::ReferenceTipStiffness();
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
   const double depth = 0.5e-6;
-  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk);
+  for (int tick = 0; tick < 5; ++tick)
+    ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk);
   const double series = k_c * k_tip / (k_c + k_tip);
   // Hermite elements are exact for a tip load; rho_inf = 0 leaves the static state after a few
   // 100 us steps, the first mode's period being 14.5 us. 1e-9: round-off in the internal units.
@@ -43,11 +38,13 @@ TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   EXPECT_EQ(frame.rotation_rad[0], 0.0);
   // The local model predicts the next press: the problem is linear, so exactly.
   const double deeper = 0.8e-6;
-  const double predicted = local.ForceAt(OverTip(deeper)).y();
-  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(deeper), 0.0), Status::kOk);
+  const double predicted = local.ForceAt(test::OverTip(deeper)).y();
+  for (int tick = 0; tick < 5; ++tick)
+    ASSERT_EQ(beam.Advance(test::OverTip(deeper), 0.0), Status::kOk);
   EXPECT_NEAR(beam.local_model().force_n, predicted, 1e-9 * predicted);
   // Lifted 1 um clear: no force, the clearance is known.
-  for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(OverTip(-1e-6), 0.0), Status::kOk);
+  for (int tick = 0; tick < 5; ++tick)
+    ASSERT_EQ(beam.Advance(test::OverTip(-1e-6), 0.0), Status::kOk);
   EXPECT_EQ(beam.local_model().force_n, 0.0);
   EXPECT_NEAR(beam.local_model().clearance_m, 1e-6, 1e-12);
 }
@@ -65,7 +62,8 @@ TEST(HapticBeamTest, TheModalPathFeelsTheSameSpringsOnceThePressHasRungDown) {
   options.modes = 4;
   options.damping = DampingModel::QualityFactor(100);
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr, options);
-  for (int tick = 0; tick < 20; ++tick) ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk);
+  for (int tick = 0; tick < 20; ++tick)
+    ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk);
   const double series = k_c * k_tip / (k_c + k_tip);
   const LocalModel& local = beam.local_model();
   ASSERT_TRUE(local.valid);
@@ -73,7 +71,8 @@ TEST(HapticBeamTest, TheModalPathFeelsTheSameSpringsOnceThePressHasRungDown) {
   EXPECT_NEAR(local.stiffness_n_per_m, series, 1e-9 * series);
   EXPECT_GT(beam.last_stats().evaluations, 0);  // Newton held the probe's force
   // Lifted clear, the beam springs back and rings down to rest.
-  for (int tick = 0; tick < 20; ++tick) ASSERT_EQ(beam.Advance(OverTip(-1e-6), 0.0), Status::kOk);
+  for (int tick = 0; tick < 20; ++tick)
+    ASSERT_EQ(beam.Advance(test::OverTip(-1e-6), 0.0), Status::kOk);
   EXPECT_EQ(beam.local_model().force_n, 0.0);
   EXPECT_LT(beam.displacement().norm(), 1e-7 * depth / model.units().length);
 }
@@ -120,7 +119,7 @@ TEST(HapticBeamTest, AHardPressHoldsTheBeamOnTheSubstrate) {
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 20.0}, &forces, &forces.get<0>());
   for (int tick = 0; tick <= 400; ++tick) {
     const double depth = 10e-6 * std::min(1.0, tick / 300.0);
-    ASSERT_EQ(beam.Advance(OverTip(depth), 0.0), Status::kOk) << tick;
+    ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk) << tick;
     ASSERT_EQ(beam.local_model().normal, Eigen::Vector3d::UnitY()) << tick;
   }
   const HapticFrame frame = beam.MakeFrame();
@@ -138,7 +137,7 @@ TEST(HapticBeamTest, APressOffTheAxisTwistsTheBeam) {
                            DofNumbering::kByNode);
   const double k_c = 5.0, depth = 0.5e-6, z0 = 8e-6;
   HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
-  const Eigen::Vector3d centre = OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z0);
+  const Eigen::Vector3d centre = test::OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z0);
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(centre, 0.0), Status::kOk);
   const Material silicon = test::Silicon();
   const double shear = silicon.young_modulus / (2.0 * (1.0 + silicon.poisson_ratio));

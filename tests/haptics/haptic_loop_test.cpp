@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptic_test_beam.hpp"
 
@@ -48,7 +49,7 @@ std::vector<double> ServoForces(PhysicsThread physics, int ticks) {
   const BeamModel<2> model = test::HapticCantilever();
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(physics);
-  HapticLoop<2> loop(beam, options);
+  HapticLoop loop(beam, options);
   std::vector<double> forces;
   for (int tick = 0; tick < ticks; ++tick) {
     ForceCommand command;
@@ -77,7 +78,7 @@ TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
   const BeamModel<2> model = test::HapticCantilever();
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
-  HapticLoop<2> loop(beam, options);
+  HapticLoop loop(beam, options);
   loop.StartPhysics();
   std::atomic<bool> done{false};
   long frames = 0;
@@ -138,7 +139,7 @@ TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) 
   const BeamModel<2> model = test::HapticCantilever();
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
-  HapticLoop<2> loop(beam, options);
+  HapticLoop loop(beam, options);
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
   scripted.safety.ramp_in_s = 0.0;
@@ -180,7 +181,7 @@ TEST(HapticLoopTest, AResetRequestedFromAnotherThreadFreesTheStuckBeam) {
   test::HapticSurface forces = test::MakeHapticSurface(model);
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 50.0}, &forces, &forces.get<0>());
   const HapticLoopOptions options = Options(PhysicsThread::kServo);
-  HapticLoop<2> loop(beam, options);
+  HapticLoop loop(beam, options);
   int tick = 0;
   auto touch = [&](double x, double depth) {
     DeviceState state;

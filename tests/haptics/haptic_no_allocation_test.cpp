@@ -1,15 +1,20 @@
 // The servo tick of the haptic scene allocates nothing: the stylus presses the cantilever's tip
 // onto the substrate (contact, stiction, Casimir), holds and lifts off, with the physics inside
-// the tick and the safety layer after it.
+// the tick and the safety layer after it; and the same for a device, a folded flexure's shuttle
+// pressed toward the substrate under the Casimir force.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "allocation_counter.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/haptics/safety_layer.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
 #include "haptics/haptic_test_beam.hpp"
+#include "structure/test_frames.hpp"
 
 namespace cosmems {
 namespace {
@@ -28,7 +33,7 @@ TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing
   HapticLoopOptions options;
   options.scaling.position_scale = 5000.0;
   options.scaling.force_scale = 2e5;
-  HapticLoop<2> loop(beam, options);
+  HapticLoop loop(beam, options);
   SafetyLayer safety(SafetyOptions{}, BuiltInSpecs("PHANTOM Omni"));
   int tick = 0;
   // 300 ticks down to 4 um below the upper face (past the 2 um gap), 300 back up 3 um clear.
@@ -47,6 +52,25 @@ TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing
   EXPECT_EQ(loop.failed_ticks(), 0u);
   ASSERT_TRUE(loop.UpdateFrame());
   EXPECT_GE(loop.frame().events.stuck, 1);
+}
+
+TEST_P(HapticNoAllocationTest, ADevicesTicksAllocateNothing) {
+  const FrameModel model(test::FoldedFlexure(100e-6, 4));
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{2e-6});
+  HapticPhysicsOptions physics;
+  physics.path = GetParam();
+  physics.modes = 8;
+  physics.damping = DampingModel::QualityFactor(100);
+  HapticStructure structure(model, ProbeOptions{2e-6, 5.0}, &casimir, physics);
+  int tick = 0;
+  // 300 ticks from 1 um above the shuttle's upper face to 1 um into it, 300 back up.
+  const long allocations = test::AllocationsDuring(600, [&] {
+    const double s = tick < 300 ? tick / 300.0 : 1.0 - (tick - 300) / 300.0;
+    const Eigen::Vector3d probe(5e-6, 1e-6 + 2e-6 + 1e-6 - 2e-6 * s, 3e-6);
+    (void)structure.Advance(probe, 1e-3 * tick++);
+  });
+  EXPECT_EQ(allocations, 0);
+  EXPECT_EQ(structure.status(), Status::kOk);
 }
 
 std::string PathName(const ::testing::TestParamInfo<TimePath>& path) {

@@ -36,7 +36,7 @@ TEST(HapticPassivityTest, AHandHeldAgainstTheSubstrateGainsNoEnergyOver10Seconds
     SCOPED_TRACE(controller ? "passivity controller on" : "passivity controller off");
     // The coupling felt at half the device's renderable stiffness (350 N/m): the stiff contact.
     test::ReferenceTouch touch;
-    HapticLoop<2>& loop = touch.loop;
+    HapticLoop& loop = touch.loop;
     ScriptedOptions scripted;
     scripted.clock = ScriptedClock::kManual;
     scripted.hand = HandModel::kSpring;

@@ -41,6 +41,11 @@ inline HandScaling ReferenceHandScaling(const DeviceSpecs& specs, double couplin
   return scaling;
 }
 
+/// The probe's centre over the tip with its lowest point `depth` below the undeformed upper face.
+inline Eigen::Vector3d OverTip(double depth) {
+  return Eigen::Vector3d(kReferenceLength, 0.5 * kReferenceThickness - depth + kProbeRadius, 0.0);
+}
+
 inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
   ContactOptions contact;
   contact.gap = kHapticGap;

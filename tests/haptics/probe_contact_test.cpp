@@ -78,6 +78,10 @@ TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
        ProbeFace::kLastEnd},
       {{-kProbeRadius + depth, 0.0, 0.0}, ProbeFace::kFirstEnd},
   };
+  // Outward normals in ProbeFace order.
+  const Eigen::Vector3d normals[] = {Eigen::Vector3d::UnitY(),  -Eigen::Vector3d::UnitY(),
+                                     Eigen::Vector3d::UnitZ(),  -Eigen::Vector3d::UnitZ(),
+                                     -Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX()};
   for (const Case& c : cases) {
     probe.MoveTo(c.centre);
     const ProbeTouch touch = probe.Touch(d);
@@ -85,7 +89,7 @@ TEST(ProbeContactTest, EachFaceFollowsTheBeamUnderTheSphere) {
     // Within 1e-12 m: the cubics are exact, the rest is round-off of micrometre positions. The
     // -z case sits 0.2 um off the section's centre: the side is taken unbounded in y.
     EXPECT_NEAR(touch.depth_m, depth, 1e-12) << c.centre.transpose();
-    EXPECT_EQ(touch.normal, ProbeContact<3>::Normal(c.face));
+    EXPECT_EQ(touch.normal, normals[static_cast<int>(c.face)]);
     EXPECT_NEAR(touch.force_n, kProbeCoupling * depth, 1e-12 * kProbeCoupling);
   }
 }

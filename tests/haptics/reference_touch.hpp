@@ -6,6 +6,7 @@
 // with the physics in the servo tick. Not movable: the beam and the loop hold references to the
 // members before them.
 #include "cosmems/haptics/built_in_specs.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "haptic_test_beam.hpp"
 
@@ -28,7 +29,7 @@ struct ReferenceTouch {
   DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
   HapticSurface forces;
   HapticBeam<2> beam;
-  HapticLoop<2> loop;
+  HapticLoop loop;
 };
 
 }  // namespace cosmems::test

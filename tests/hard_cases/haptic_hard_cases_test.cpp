@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cosmems/haptics/built_in_specs.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptics/haptic_test_beam.hpp"
@@ -93,7 +94,7 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   physics.substeps = substeps;
   test::ReferenceTouch touch(physics);
   HapticBeam<2>& beam = touch.beam;
-  HapticLoop<2>& loop = touch.loop;
+  HapticLoop& loop = touch.loop;
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
   scripted.specs = touch.specs;

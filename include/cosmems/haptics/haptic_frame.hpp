@@ -8,15 +8,15 @@
 namespace cosmems {
 
 /// What the display side shows of one physics tick (published at the physics rate, read at
-/// 30 Hz through a TripleBuffer). Sized once by HapticBeam::MakeFrame(); filling it allocates
+/// 30 Hz through a TripleBuffer). Sized once by HapticPhysics::MakeFrame(); filling it allocates
 /// nothing.
 struct HapticFrame {
   double time_s = 0.0;                                      ///< simulated time
-  Eigen::Vector3d probe_m = Eigen::Vector3d::Zero();        ///< probe centre, beam axes
-  Eigen::Vector3d probe_force_n = Eigen::Vector3d::Zero();  ///< the beam's push on the probe
-  Eigen::VectorXd node_x_m;                                 ///< node positions along the axis
-  Eigen::VectorXd deflection_m;                             ///< u_y at each node
-  Eigen::VectorXd rotation_rad;                             ///< theta_z (slope) at each node
+  Eigen::Vector3d probe_m = Eigen::Vector3d::Zero();        ///< probe centre, global axes
+  Eigen::Vector3d probe_force_n = Eigen::Vector3d::Zero();  ///< the structure's push on it
+  Eigen::VectorXd node_x_m;                                 ///< a beam's node positions on its axis
+  Eigen::VectorXd deflection_m;                             ///< a beam's u_y at each node
+  Eigen::VectorXd rotation_rad;                             ///< a beam's theta_z at each node
   ContactSummary contact;                                   ///< with the substrate
   ContactEvents events;                                     ///< counted since the start
   Status status = Status::kOk;                              ///< of the tick's physics

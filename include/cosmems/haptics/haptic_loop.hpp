@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "cosmems/haptics/hand_scaling.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/haptic_physics.hpp"
 #include "cosmems/haptics/loop_stats.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/haptics/servo_client.hpp"
@@ -27,27 +27,26 @@ struct HapticLoopOptions {
   int reset_button = 1;
 };
 
-/// The ServoClient that lets a hand touch a HapticBeam: each servo tick maps the stylus into the
-/// micro world (HandScaling), has the physics place the probe there (in the tick, or on the
-/// physics thread through a TripleBuffer), renders the probe's force from the newest LocalModel
-/// and scales it back to the hand. The display side reads HapticFrames through another
-/// TripleBuffer. Tick() allocates nothing.
-template <int Dim>
+/// The ServoClient that lets a hand touch a HapticPhysics (a beam or any structure): each servo
+/// tick maps the stylus into the micro world (HandScaling), has the physics place the probe there
+/// (in the tick, or on the physics thread through a TripleBuffer), renders the probe's force from
+/// the newest LocalModel and scales it back to the hand. The display side reads HapticFrames
+/// through another TripleBuffer. Tick() allocates nothing.
 class HapticLoop final : public ServoClient {
  public:
-  HapticLoop(HapticBeam<Dim>& beam, const HapticLoopOptions& options)
-      : beam_(beam), options_(ValidOptions(options)), frames_(beam.MakeFrame()) {
-    physics_.Start(beam.tick_s(), options.physics == PhysicsThread::kOwn, false);
+  HapticLoop(HapticPhysics& physics, const HapticLoopOptions& options)
+      : touched_(physics), options_(ValidOptions(options)), frames_(physics.MakeFrame()) {
+    physics_.Start(physics.tick_s(), options.physics == PhysicsThread::kOwn, false);
   }
   ~HapticLoop() override { StopPhysics(); }
   HapticLoop(const HapticLoop&) = delete;
   HapticLoop& operator=(const HapticLoop&) = delete;
 
-  /// Starts the physics thread (PhysicsThread::kOwn; nothing otherwise), one beam tick a
+  /// Starts the physics thread (PhysicsThread::kOwn; nothing otherwise), one physics tick a
   /// period. Before the device.
   void StartPhysics() {
     if (options_.physics != PhysicsThread::kOwn || thread_.joinable()) return;
-    physics_.Start(beam_.tick_s(), true, false);
+    physics_.Start(touched_.tick_s(), true, false);
     stop_ = false;
     thread_ = std::thread([this] { RunPhysics(); });
   }
@@ -62,7 +61,7 @@ class HapticLoop final : public ServoClient {
     const Eigen::Vector3d micro = options_.scaling.ToMicro(state.position_m);
     if (options_.physics == PhysicsThread::kServo) {
       RunPhysicsTick({micro, state.time_s, state.buttons});
-      model_ = beam_.local_model();
+      model_ = touched_.local_model();
     } else {
       probes_.Publish({micro, state.time_s, state.buttons});
       if (models_.Update()) model_ = models_.Front();
@@ -77,7 +76,7 @@ class HapticLoop final : public ServoClient {
   void OnStart() noexcept override { model_ = LocalModel{}; }
 
   /// The paper's "Reset Failure" asked for from any thread (a button on the display side): the
-  /// next physics tick resets the beam, as the stylus button does. Wait-free.
+  /// next physics tick resets the structure, as the stylus button does. Wait-free.
   void RequestReset() { reset_requested_.store(true, std::memory_order_release); }
 
   /// Display side (one thread): takes the newest frame, true when it changed.
@@ -115,9 +114,9 @@ class HapticLoop final : public ServoClient {
     last_buttons_ = input.buttons;
     // Both sources are consumed every tick, so a request and a press together reset once.
     const bool requested = reset_requested_.exchange(false, std::memory_order_acq_rel);
-    if (reset || requested) beam_.Reset();
-    if (beam_.Advance(input.probe_m, input.time_s) != Status::kOk) ++failed_;
-    beam_.Fill(frames_.Back());
+    if (reset || requested) touched_.Reset();
+    if (touched_.Advance(input.probe_m, input.time_s) != Status::kOk) ++failed_;
+    touched_.Fill(frames_.Back());
     frames_.Publish();
     physics_.Record(start, (Now() - start) * 1e6);
   }
@@ -125,17 +124,17 @@ class HapticLoop final : public ServoClient {
   // The physics thread: one tick a period on absolute deadlines (no drift, no busy wait), on the
   // newest probe position the servo loop published.
   void RunPhysics() {
-    PeriodicDeadline deadline(1.0 / beam_.tick_s());
+    PeriodicDeadline deadline(1.0 / touched_.tick_s());
     ProbeInput input;
     while (!stop_.load(std::memory_order_relaxed)) {
       if (probes_.Update()) input = probes_.Front();
       RunPhysicsTick(input);
-      models_.Publish(beam_.local_model());
+      models_.Publish(touched_.local_model());
       deadline.SleepUntilNext();
     }
   }
 
-  HapticBeam<Dim>& beam_;
+  HapticPhysics& touched_;
   HapticLoopOptions options_;
   LocalModel model_;  // the servo thread's copy
   std::uint32_t last_buttons_ = 0;

@@ -292,6 +292,8 @@ struct SceneDevice {
                                              ///< felt at half the device's renderable stiffness)
   std::optional<double> coupling_stiffness;  ///< N/m, stylus-probe spring (default 25 k_struct)
   std::optional<double> probe_radius;        ///< m, the stylus tip (default: the thickness)
+  /// A device's node or body the built-in motions press (default: its first body).
+  std::optional<std::string> target;
 };
 
 /// A scene file in typed form: SI units, the documented defaults for every optional key

@@ -2,12 +2,10 @@
 
 #include <memory>
 
-#include "cosmems/beam/beam_model.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_device.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/haptics/haptic_physics.hpp"
 #include "cosmems/scene/scene.hpp"
-#include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/session/haptic_settings.hpp"
 
 namespace cosmems {
@@ -34,12 +32,11 @@ struct OpenedDevice {
 /// std::invalid_argument for settings the device cannot render.
 OpenedDevice OpenDevice(const Scene& scene);
 
-/// One touch of a scene's beam, built the same way for every program: the beam model of the
-/// scene (numbered node by node in 3-D, so that a press off the axis twists the beam), the
-/// effects it declares, the HapticBeam with the probe, and the HapticLoop the device's servo
-/// thread ticks. Start() runs it, Stop() (or the destructor) ends it; the parts stay readable
-/// after Stop() for the figures.
-template <int Dim>
+/// One touch of a scene's structure, built the same way for every program: the model of the
+/// scene (a beam numbered node by node in 3-D, so that a press off the axis twists it; or a
+/// device's frame), the effects it declares, the HapticPhysics with the probe, and the
+/// HapticLoop the device's servo thread ticks. Start() runs it, Stop() (or the destructor) ends
+/// it; the parts stay readable after Stop() for the figures.
 class HapticSession {
  public:
   /// `device` must be open. `physics` sets the substeps and rho_inf; its tick is the period of
@@ -59,19 +56,18 @@ class HapticSession {
   HapticDevice& device() { return *opened_.device; }
   const OpenedDevice& opened() const { return opened_; }
   const HapticSettings& settings() const { return opened_.settings; }
-  const BeamModel<Dim>& model() const { return model_; }
-  HapticLoop<Dim>& loop() { return loop_; }
-  const HapticLoop<Dim>& loop() const { return loop_; }
+  const HapticPhysics& physics() const;
+  HapticLoop& loop() { return loop_; }
+  const HapticLoop& loop() const { return loop_; }
+
+  /// What the session touches: the scene's model, its effects and its physics (defined where
+  /// the session is built).
+  struct Touched;
 
  private:
   OpenedDevice opened_;
-  BeamModel<Dim> model_;
-  SceneForces<Dim> forces_;
-  HapticBeam<Dim> beam_;
-  HapticLoop<Dim> loop_;
+  std::unique_ptr<Touched> touched_;
+  HapticLoop loop_;
 };
-
-extern template class HapticSession<2>;
-extern template class HapticSession<3>;
 
 }  // namespace cosmems

@@ -147,6 +147,10 @@ class FrameModel {
     }
   }
 
+  /// Whether directions i % 6 and j % 6 of carriers may couple (one group of the band): a force
+  /// may tie two degrees of freedom only when they do.
+  bool Coupled(int i, int j) const { return group_[i % 6] == group_[j % 6]; }
+
   /// How a mesh node moves with its carrier: identity for a free node, [I -[r]x; 0 I] on a body.
   Eigen::Matrix<double, 6, 6> NodeTransform(int node) const {
     Eigen::Matrix<double, 6, 6> t = Eigen::Matrix<double, 6, 6>::Identity();
@@ -165,9 +169,6 @@ class FrameModel {
     return UnitSystem::ForBeam(length, first.material.young_modulus * first.section.SecondMomentZ(),
                                first.material.density * first.section.Area());
   }
-
-  // Whether directions i % 6 and j % 6 of carriers may couple (one group).
-  bool Coupled(int i, int j) const { return group_[i % 6] == group_[j % 6]; }
 
   // Whether an element's local dofs a and b may couple: one field, or, with stretching, the
   // axial field and the bendings.

@@ -12,6 +12,7 @@
 #include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/core/gauss_legendre.hpp"
 #include "cosmems/core/validation.hpp"
+#include "cosmems/structure/dof_weights.hpp"
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/surface/electrode.hpp"
 
@@ -40,10 +41,8 @@ struct FrameGapOptions {
 /// points come first, element by element, then the bodies'.
 class FrameGapPoints {
  public:
-  struct Point {
-    std::array<int, 12> dof{};  ///< the distinct degrees of freedom it moves with (count of them)
-    std::array<double, 12> n{};
-    int count = 0;
+  /// Its weights are its motion toward +y.
+  struct Point : DofWeights {
     double gap_m = 0.0;    ///< at rest
     double area_m2 = 0.0;  ///< its share of the face
     double width_m = 0.0;  ///< the strip's width, or a plate's narrower side
@@ -99,11 +98,7 @@ class FrameGapPoints {
   }
   /// The point's motion toward +y per unit of the vector x (a displacement or a velocity),
   /// in x's internal units.
-  static double Along(const Point& point, const Eigen::VectorXd& x) {
-    double u = 0.0;
-    for (int i = 0; i < point.count; ++i) u += point.n[i] * x[point.dof[i]];
-    return u;
-  }
+  static double Along(const Point& point, const Eigen::VectorXd& x) { return point.Dot(x); }
 
  private:
   // How far below a member's axis its lower face lies, and how wide the face is seen from below,
@@ -134,24 +129,6 @@ class FrameGapPoints {
       lowest = std::min(lowest, body.center.y() - 0.5 * body.size.y());
     }
     return lowest;
-  }
-
-  // The global weights of a point (carrier dofs, weights), merged by dof and stripped of the
-  // rotation's round-off into directions the point does not move in.
-  static void SetWeights(Point& point, const std::array<int, 12>& dofs,
-                         const FrameModel::ElementVector& n) {
-    const double largest = n.cwiseAbs().maxCoeff();
-    for (int a = 0; a < 12; ++a) {
-      if (dofs[a] < 0 || std::abs(n[a]) <= 1e-12 * largest) continue;
-      int* end = point.dof.data() + point.count;
-      int* at = std::find(point.dof.data(), end, dofs[a]);
-      if (at == end) {
-        point.dof[point.count] = dofs[a];
-        point.n[point.count++] = n[a];
-      } else {
-        point.n[at - point.dof.data()] += n[a];
-      }
-    }
   }
 
   void PlaceOnElement(int e, const Electrode& electrode, const GaussLegendre& rule) {
@@ -189,8 +166,7 @@ class FrameGapPoints {
       point.local[4] = -a2 * l * h[1];
       point.local[8] = a2 * h[2];
       point.local[10] = -a2 * l * h[3];
-      SetWeights(point, model_.ElementDofs(e),
-                 model_.ElementTransform(e).transpose() * point.local);
+      point.Set(model_.ElementDofs(e), model_.ElementTransform(e).transpose() * point.local);
       point.gap_m = (a + xi * (b - a)).y() - face.depth - substrate_m_;
       point.area_m2 = rule.weights[k] * (hi - lo) * element.length * face.width;
       point.width_m = face.width;
@@ -219,7 +195,7 @@ class FrameGapPoints {
         n[1] = -(z - c.z()) / length_m_;  // theta_x
         n[2] = (x - c.x()) / length_m_;   // theta_z
         Point point;
-        SetWeights(point, dofs, n);
+        point.Set(dofs, n);
         point.gap_m = c.y() - 0.5 * b.size.y() - substrate_m_;
         point.area_m2 = rule.weights[i] * rule.weights[j] * (clip[0][1] - clip[0][0]) *
                         (clip[1][1] - clip[1][0]);

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <Eigen/Core>
+
+#include "cosmems/core/status.hpp"
+#include "cosmems/core/validation.hpp"
+#include "cosmems/haptics/haptic_frame.hpp"
+#include "cosmems/haptics/local_model.hpp"
+#include "cosmems/time/damping_model.hpp"
+#include "cosmems/time/stepper_options.hpp"
+
+namespace cosmems {
+
+/// How the physics advances between two servo ticks.
+struct HapticPhysicsOptions {
+  double tick_s = 1e-3;  ///< simulated time per Advance() (the servo period)
+  /// Implicit steps per tick. The reference cantilever's first mode (68.8 kHz) is far above the
+  /// servo rate, so the steps do not resolve it whatever their number: the hand feels the
+  /// quasi-static beam. Fewer are faster (bench/surface_tick_bench.cpp; the figures are in
+  /// doc/surface.md); 2 take every tick of the tests' lay-downs and peels.
+  int substeps = 2;
+  /// Generalised-alpha's spectral radius: 0 annihilates the unresolved vibrations (the hand
+  /// feels the quasi-static structure, as it would the real one) and adds no energy at impacts.
+  double rho_inf = 0.0;
+  /// The time path (analysis.integrator = "modal" with model.modes): the Newmark family on the
+  /// full model, or `modes` modes with the forces held over each step and the truncated modes
+  /// answering statically.
+  TimePath path = TimePath::kNewmarkFamily;
+  int modes = 0;
+  /// The modal path's damping, as ratios of the modes (the real device's quality factor): exact
+  /// propagation keeps every mode it does not damp ringing under the hand. The full path leaves
+  /// it out (rho_inf removes what the ticks do not resolve).
+  DampingModel damping;
+
+  void Validate() const {
+    RequirePositive("tick_s", tick_s);
+    RequireWithin("substeps", substeps, 1, 10000);
+    RequireWithin("rho_inf", rho_inf, 0.0, 1.0);
+    if (path == TimePath::kModal) RequireWithin("modes", modes, 1, 10000);
+  }
+};
+
+/// What the hand touches, as the HapticLoop ticks it: a beam (HapticBeam) or any structure
+/// (HapticStructure). Advance() places the probe and advances the physics by tick_s; after it
+/// the physics holds the LocalModel the servo loop renders. Advance() and Fill() allocate
+/// nothing and report a failure as a status; a failed tick leaves the structure where it was and
+/// the local model invalid (the safety layer then brings the force to zero).
+class HapticPhysics {
+ public:
+  virtual ~HapticPhysics() = default;
+
+  /// One tick: the probe moves to `probe_m` [m, the structure's axes] (where the hand put it at
+  /// device time `source_time_s`) and the structure advances by tick_s.
+  virtual Status Advance(const Eigen::Vector3d& probe_m, double source_time_s) = 0;
+  /// The paper's "Reset Failure": the undeformed structure at rest, nothing stuck (events are
+  /// kept). May allocate: call it outside the servo thread when threads are split (HapticLoop
+  /// does).
+  virtual Status Reset() = 0;
+
+  virtual const LocalModel& local_model() const = 0;
+  /// Simulated time one Advance() covers [s].
+  virtual double tick_s() const = 0;
+  /// The structure's free degrees of freedom.
+  virtual int DofCount() const = 0;
+
+  /// A frame sized for this structure (allocates: call once).
+  virtual HapticFrame MakeFrame() const = 0;
+  /// Copies the current state into a frame from MakeFrame(); allocates nothing.
+  virtual void Fill(HapticFrame& frame) const = 0;
+};
+
+}  // namespace cosmems

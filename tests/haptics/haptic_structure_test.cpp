@@ -1,0 +1,237 @@
+// The hand on any structure: the probe's faces on members and bodies against closed-form shapes,
+// its force and tangent against differences of the coupling's energy, and presses that feel the
+// suspension's closed-form stiffness in series with the coupling, on a cantilever member (the
+// same as the validated beam), a plate on four beams and a folded flexure's shuttle.
+#include "cosmems/haptics/haptic_structure.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/haptics/frame_probe_contact.hpp"
+#include "cosmems/haptics/haptic_beam.hpp"
+#include "force_differences.hpp"
+#include "haptics/haptic_test_beam.hpp"
+#include "structure/test_frames.hpp"
+#include "surface/plate_on_four_beams.hpp"
+
+namespace cosmems {
+namespace {
+
+constexpr double kRadius = 2e-6;  // m, the probe as thick as the members
+
+// The reference cantilever (silicon, 200 x 20 x 2 um, 20 elements) as a one-member frame.
+StructureDescription CantileverFrame() {
+  StructureDescription s;
+  const int root = test::AddNode(s, "root", Eigen::Vector3d::Zero(), Support::kClamped);
+  const int tip = test::AddNode(s, "tip", Eigen::Vector3d(test::kReferenceLength, 0.0, 0.0));
+  s.members.push_back(
+      {root, tip, test::Silicon(), test::ReferenceSection(), 20, Eigen::Vector3d::UnitY()});
+  s.series_order = 0;  // Hermite elements, as the beam's
+  return s;
+}
+
+// The clamped cantilever's deflection under a tip force P: P x^2 (3L - x) / (6 E I).
+double TipLoadDeflection(double force, double ei, double x) {
+  const double l = test::kReferenceLength;
+  return force * x * x * (3.0 * l - x) / (6.0 * ei);
+}
+
+TEST(FrameProbeContactTest, FacesFollowTheMembersStaticShape) {
+  const FrameModel model(CantileverFrame());
+  const double py = -2e-7, pz = 1e-6;  // N: down 0.24 um, aside 12 nm at the tip
+  FrameLoadCase tip;
+  tip.points.push_back({1, -1, {0.0, py, pz}, {0.0, 0.0, 0.0}});
+  const FrameStaticSolution solution = SolveFrameStatic(model, tip);
+  ASSERT_EQ(solution.status, Status::kOk);
+  const Eigen::VectorXd& d = solution.displacement;
+  const RectangularSection s = test::ReferenceSection();
+  const double eiz = test::Silicon().young_modulus * s.width * std::pow(s.thickness, 3) / 12.0;
+  const double eiy = test::Silicon().young_modulus * s.thickness * std::pow(s.width, 3) / 12.0;
+  FrameProbeContact probe(model, ProbeOptions{kRadius, 5.0});
+  const double x = 123.4e-6, depth = 0.1e-6;  // inside element 12, off its nodes
+  const double w = TipLoadDeflection(py, eiz, x), v = TipLoadDeflection(pz, eiy, x);
+  struct Case {
+    Eigen::Vector3d centre;
+    ProbeFace face;
+    Eigen::Vector3d normal;
+  };
+  // Off the axis across the width: the faces' points turn with the twist, which a force through
+  // the axis leaves at zero.
+  const Case cases[] = {
+      {{x, w + 0.5 * s.thickness + kRadius - depth, 3e-6}, ProbeFace::kUpper, {0, 1, 0}},
+      {{x, w - 0.5 * s.thickness - kRadius + depth, -4e-6}, ProbeFace::kLower, {0, -1, 0}},
+      {{x, 0.2e-6, v + 0.5 * s.width + kRadius - depth}, ProbeFace::kPositiveZ, {0, 0, 1}},
+      {{x, 0.0, v - 0.5 * s.width - kRadius + depth}, ProbeFace::kNegativeZ, {0, 0, -1}},
+      {{test::kReferenceLength + kRadius - depth, 0.0, 2e-6}, ProbeFace::kLastEnd, {1, 0, 0}},
+  };
+  for (const Case& c : cases) {
+    probe.MoveTo(c.centre);
+    const ProbeTouch touch = probe.Touch(d);
+    EXPECT_EQ(touch.face, c.face) << c.centre.transpose();
+    // 1e-12 m: the Hermite cubics are exact for a tip load; the rest is round-off of micrometre
+    // positions.
+    EXPECT_NEAR(touch.depth_m, depth, 1e-12) << c.centre.transpose();
+    EXPECT_TRUE(touch.normal.isApprox(c.normal, 1e-12)) << touch.normal.transpose();
+  }
+  // Out of reach beside the member; above it, the clearance is known at any height.
+  probe.MoveTo(Eigen::Vector3d(x, 10e-6, 0.0));
+  EXPECT_NEAR(probe.Touch(d).depth_m, w + 0.5 * s.thickness + kRadius - 10e-6, 1e-12);
+  probe.MoveTo(Eigen::Vector3d(x, 0.0, 0.5 * s.width + 1.5 * kRadius));
+  EXPECT_EQ(probe.Touch(d).depth_m, -std::numeric_limits<double>::infinity());
+}
+
+// In a planar frame that is no straight chain the twist shares the band with the out-of-plane
+// bending (a straight chain numbers them apart and leaves the twist out, as the beam does): an L
+// of the cantilever and a 50 um arm along z, twisted by a torque about x at the arm's end, which
+// reaches the cantilever as a pure torque, theta_x linear along it (exact in the elements). The
+// upper face's point at z_c across the width moves by (theta x arm)_y = -theta_x(x) z_c.
+TEST(FrameProbeContactTest, AnUpperFaceOffTheAxisTurnsWithTheTwist) {
+  StructureDescription l_frame = CantileverFrame();
+  const int end = test::AddNode(l_frame, "end", {test::kReferenceLength, 0.0, 50e-6});
+  l_frame.members.push_back(
+      {1, end, test::Silicon(), test::ReferenceSection(), 5, Eigen::Vector3d::UnitY()});
+  const FrameModel model(l_frame);
+  FrameLoadCase torque;
+  torque.points.push_back({end, -1, {0.0, 0.0, 0.0}, {1e-9, 0.0, 0.0}});
+  const FrameStaticSolution twisted = SolveFrameStatic(model, torque);
+  ASSERT_EQ(twisted.status, Status::kOk);
+  const double x = 123.4e-6, z_c = 8e-6, depth = 0.1e-6;
+  const double twist = twisted.nodes[1][3] * x / test::kReferenceLength;
+  ASSERT_GT(std::abs(twist * z_c), 1e-8);  // a motion the check resolves
+  FrameProbeContact probe(model, ProbeOptions{kRadius, 5.0});
+  const double top = 0.5 * test::kReferenceThickness + kRadius - depth;
+  probe.MoveTo(Eigen::Vector3d(x, top - twist * z_c, z_c));
+  const ProbeTouch touch = probe.Touch(twisted.displacement);
+  EXPECT_EQ(touch.face, ProbeFace::kUpper);
+  // 1e-12 m as above.
+  EXPECT_NEAR(touch.depth_m, depth, 1e-12);
+}
+
+// A random small state of `model`, in its internal units.
+Eigen::VectorXd RandomState(const FrameModel& model, double scale_m) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::VectorXd d(model.FreeDofCount());
+  for (int i = 0; i < d.size(); ++i) d[i] = uniform(random) * scale_m / model.units().length;
+  return d;
+}
+
+TEST(FrameProbeContactTest, ForceAndTangentAreTheCouplingEnergysDifferences) {
+  const StructureDescription flexure = test::FoldedFlexure(100e-6, 4);
+  const FrameModel model(flexure);
+  const Eigen::VectorXd d = RandomState(model, 2e-9);
+  // The shuttle is 40 x 2 x 40 um at the origin; its beams leave along z from its edges at
+  // z = +-20 um. Element 0 is the first quarter of an inner beam, 2 x 2 um.
+  const FrameMesh::Element& element = model.mesh().elements[0];
+  const Eigen::Vector3d middle =
+      0.5 * (model.mesh().nodes[element.from].position + model.mesh().nodes[element.to].position);
+  const Eigen::Vector3d across = element.axes.row(2).transpose(), up = Eigen::Vector3d::UnitY();
+  struct Case {
+    Eigen::Vector3d centre;
+    ProbeFace face;
+  };
+  const double in = kRadius - 0.3e-6;  // the sphere 0.3 um into a face at rest
+  const Case cases[] = {
+      {{5e-6, 1e-6 + in, 3e-6}, ProbeFace::kUpper},        // the shuttle from above, off centre
+      {{20e-6 + in, 0.2e-6, -4e-6}, ProbeFace::kLastEnd},  // its +x side
+      {{-20e-6 - in, 0.0, 6e-6}, ProbeFace::kFirstEnd},    // its -x side
+      {{5e-6, -1e-6 - in, -12e-6}, ProbeFace::kLower},     // from below
+      // A member's faces off its axis move with its bendings and its twist.
+      {middle + 0.5e-6 * across + (1e-6 + in) * up, ProbeFace::kUpper},
+      {middle + (1e-6 + in) * across + 0.3e-6 * up, ProbeFace::kPositiveZ},
+  };
+  const double length = model.units().length, force = model.units().force;
+  for (const Case& c : cases) {
+    FrameProbeContact probe(model, ProbeOptions{kRadius, 5.0});  // holding no face
+    probe.MoveTo(c.centre);
+    probe.Commit(d);  // holds the face it presses
+    const ProbeTouch touch = probe.Touch(d);
+    ASSERT_EQ(touch.face, c.face) << c.centre.transpose();
+    ASSERT_GT(touch.depth_m, 0.0);
+    // The coupling's energy (k/2) delta^2 = F delta / 2, internal units.
+    auto energy = [&](const Eigen::VectorXd& x) {
+      const ProbeTouch t = probe.Touch(x);
+      return 0.5 * (t.force_n / force) * std::max(0.0, t.depth_m / length);
+    };
+    // The force is linear in the overlap and the overlap affine in d: the differences are exact
+    // up to round-off, 1e-7 of a step 1e-4 of the state.
+    test::ExpectForceAndTangentMatchDifferences(probe, d, model.Stiffness().bandwidth(), energy,
+                                                1e-4 * d.cwiseAbs().maxCoeff(), 1e-7);
+  }
+}
+
+TEST(HapticStructureTest, ACantileverMemberIsPressedAsTheValidatedBeam) {
+  const FrameModel frame(CantileverFrame());
+  const BeamModel<2> beam_model = test::HapticCantilever();
+  const ProbeOptions probe{test::kProbeRadius, 5.0};
+  HapticStructure structure(frame, probe, nullptr);
+  HapticBeam<2> beam(beam_model, probe, nullptr, nullptr);
+  const double series = 5.0 * test::ReferenceTipStiffness() / (5.0 + test::ReferenceTipStiffness());
+  for (const double depth : {0.5e-6, 0.8e-6, 0.2e-6, -1e-6}) {
+    for (int tick = 0; tick < 5; ++tick) {
+      ASSERT_EQ(structure.Advance(test::OverTip(depth), 0.0), Status::kOk);
+      ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk);
+    }
+    const LocalModel& a = structure.local_model();
+    const LocalModel& b = beam.local_model();
+    ASSERT_TRUE(a.valid);
+    // The same elements in another numbering: the same statics to round-off (1e-9).
+    EXPECT_NEAR(a.force_n, b.force_n, 1e-9 * series * 1e-6) << depth;
+    EXPECT_NEAR(a.force_n, series * std::max(0.0, depth), 1e-9 * series * 1e-6) << depth;
+    EXPECT_NEAR(a.stiffness_n_per_m, b.stiffness_n_per_m, 1e-9 * series);
+    EXPECT_NEAR(a.clearance_m, b.clearance_m, 1e-15);
+    EXPECT_TRUE(a.normal.isApprox(b.normal));
+  }
+  EXPECT_EQ(structure.DofCount(), 6 * 20);
+}
+
+// The probe pressing the point `face_m` of an upper face `depth` deep from above, on the
+// structure, until it has settled (rho_inf = 0 leaves the static state after a few ticks, the
+// devices' first modes being near 100 kHz): the force and the local model's stiffness.
+struct Press {
+  double force_n, stiffness_n_per_m;
+};
+Press PressAt(HapticStructure& structure, const Eigen::Vector3d& centre) {
+  for (int tick = 0; tick < 6; ++tick) EXPECT_EQ(structure.Advance(centre, 0.0), Status::kOk);
+  EXPECT_TRUE(structure.local_model().valid);
+  return {structure.local_model().force_n, structure.local_model().stiffness_n_per_m};
+}
+
+TEST(HapticStructureTest, APlateOnFourBeamsIsItsSuspensionInSeriesWithTheCoupling) {
+  const test::PlateOnFourBeams plate;
+  const FrameModel model(plate.structure);
+  const double k_c = 5.0 * plate.k, depth = 0.4e-6;
+  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr);
+  const Press press = PressAt(structure, {0.0, 1e-6 + kRadius - depth, 0.0});
+  const double series = k_c * plate.k / (k_c + plate.k);
+  // The frame is exact for the clamped-guided beams to 1e-10 (frame_model_test.cpp).
+  EXPECT_NEAR(press.stiffness_n_per_m, series, 1e-9 * series);
+  EXPECT_NEAR(press.force_n, series * depth, 1e-9 * series * depth);
+  EXPECT_TRUE(structure.local_model().normal.isApprox(Eigen::Vector3d::UnitY()));
+  // Lifted 1 um clear, the plate springs back: no force, the clearance known.
+  PressAt(structure, {0.0, 1e-6 + kRadius + 1e-6, 0.0});
+  EXPECT_EQ(structure.local_model().force_n, 0.0);
+  EXPECT_NEAR(structure.local_model().clearance_m, 1e-6, 1e-12);
+}
+
+TEST(HapticStructureTest, APushOnTheShuttlesSideMeetsTheFlexuresInPlaneStiffness) {
+  FoldedFlexureDesign design;
+  design.material = test::Poly();
+  design.elements = 4;
+  const FrameModel model(FoldedFlexure(design));
+  const double k_x = design.Stiffness(), k_c = 5.0 * k_x, depth = 0.3e-6;
+  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr);
+  // The +x side of the 40 um shuttle, on its centre line: a push along -x without a turn.
+  const Press press = PressAt(structure, {20e-6 + kRadius - depth, 0.0, 0.0});
+  const double series = k_c * k_x / (k_c + k_x);
+  // 24 E I / L^3 with rigid trusses, exact to 1e-10 in the frame (frame_model_test.cpp).
+  EXPECT_NEAR(press.stiffness_n_per_m, series, 1e-9 * series);
+  EXPECT_NEAR(press.force_n, series * depth, 1e-9 * series * depth);
+  EXPECT_TRUE(structure.local_model().normal.isApprox(Eigen::Vector3d::UnitX()));
+}
+
+}  // namespace
+}  // namespace cosmems
