@@ -67,6 +67,7 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   r.force_limit_n = device.force_limit_n();
   loop.UpdateFrame();
   r.contact = loop.frame().contact;
+  r.has_contact = scene.effects.HasContact();
   r.events = loop.frame().events;
   r.position_scale = settings.scaling.position_scale;
   r.force_scale = settings.scaling.force_scale;
@@ -171,7 +172,7 @@ void HapticReport::PrintResults(std::ostream& out) const {
   out << "events                " << r.events.proximity_warnings << " proximity warnings, "
       << r.events.contacts << " contacts, " << r.events.stuck << " stuck, " << r.events.releases
       << " releases\n";
-  PrintContact(out, r.contact);
+  if (r.has_contact) PrintContact(out, r.contact);
 }
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {

@@ -131,6 +131,14 @@ TEST(HapticCliTest, TheStylusPressesADevicesBodyOrNode) {
   // substrate.
   const double shuttle_coupling = json.at("scaling").at("coupling_stiffness_n_per_m").get<double>();
   ExpectContains(json.at("warnings").dump(), "loads does not change a haptic analysis");
+  // The summary leaves out the substrate contact, which does not act on a device; a beam with
+  // contact shows its state.
+  std::vector<std::string> text = {"run"};
+  text.insert(text.end(), shuttle.begin(), shuttle.end());
+  const testing::CliOutcome device_summary = testing::Cli(text);
+  EXPECT_EQ(device_summary.code, 0);
+  EXPECT_EQ(device_summary.out.find("substrate"), std::string::npos) << device_summary.out;
+  ExpectContains(testing::Cli(Args({"run", "cantilever-haptic"})).out, "substrate             ");
   // A truss, nearer the anchors, is stiffer toward the substrate than the shuttle.
   std::vector<std::string> truss = shuttle;
   truss.insert(truss.end(), {"--set", "device.target=\"truss_high\""});
