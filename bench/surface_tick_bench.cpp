@@ -13,14 +13,17 @@
 #include <time.h>
 
 #include <chrono>
+#include <optional>
 #include <vector>
 
 #include "cosmems/analysis/step_timing.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/structure/folded_flexure.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
@@ -159,39 +162,52 @@ BENCHMARK(BM_TouchedBeamTick)
 
 // The tick the hand feels on a device (HapticStructure): the folded-flexure resonator with
 // `elements` per beam (8 beams: 80 elements at 10, 1000 at 125) over a substrate 2 um below,
-// with the Casimir force (`casimir` = 1) or the probe alone (0); the probe (coupling 5 N/m, radius
-// 2 um) presses the shuttle's upper face 3 um off its centre down to 2 um deep and lifts 1 um
-// clear, over and over, on the full model's path (generalised-alpha, 2 steps a tick) or the modal
-// one (`modes` modes, Q = 100). Contact and stiction do not act on devices yet.
+// with the Casimir force (`casimir` = 1) or the probe alone (0), and with the substrate's contact
+// (`contact` = 1: the coupling 50 N/m presses the shuttle onto the substrate, 4 um deep) or
+// without it (the coupling 5 N/m, 2 um deep, the shuttle never reaching the substrate); the probe
+// (radius 2 um) presses the shuttle's upper face 3 um off its centre and lifts 1 um clear, over and
+// over, on the full model's path (generalised-alpha, 2 steps a tick) or the modal one (`modes`
+// modes, Q = 100). Stiction does not act on devices.
 void BM_TouchedDeviceTick(benchmark::State& state) {
   FoldedFlexureDesign design;
   design.elements = static_cast<int>(state.range(0));
   const FrameModel model(FoldedFlexure(design));
   FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{kGap});
-  NonlinearForce* effects = state.range(2) != 0 ? &casimir : nullptr;
+  ContactOptions substrate;
+  substrate.gap = kGap;
+  substrate.separation = 1e-2 * kGap;  // the scenes' default beside a surface pressure
+  std::optional<FrameSubstrateContact> contact;
+  ForceSum forces;
+  if (state.range(2) != 0) forces.Add(casimir);
+  if (state.range(3) != 0) forces.Add(contact.emplace(model, substrate));
   HapticPhysicsOptions physics;
   physics.modes = static_cast<int>(state.range(1));
   physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
   physics.damping = DampingModel::QualityFactor(100);
-  HapticStructure structure(model, ProbeOptions{2e-6, 5.0}, effects, physics);
+  const double coupling = contact ? 50.0 : 5.0, deepest = contact ? 4e-6 : 2e-6;
+  HapticStructure structure(model, ProbeOptions{2e-6, coupling}, forces.Empty() ? nullptr : &forces,
+                            contact ? &*contact : nullptr, physics);
   long tick = 0;
   TimeTicks(state, [&] {
     const double s = static_cast<double>(tick % kCycle) / kCycle;
-    const double depth = s < 0.5 ? 2e-6 * s / 0.5 : 2e-6 - 3e-6 * (s - 0.5) / 0.5;
+    const double depth = s < 0.5 ? deepest * s / 0.5 : deepest - (deepest + 1e-6) * (s - 0.5) / 0.5;
     ++tick;
     const Eigen::Vector3d probe(3e-6, 1e-6 + 2e-6 - depth, 5e-6);
     return structure.Advance(probe, 0.0) == Status::kOk;
   });
   state.counters["dofs"] = model.FreeDofCount();
   state.counters["band"] = model.Stiffness().bandwidth();
+  if (contact) state.counters["contacts"] = static_cast<double>(contact->events().contacts);
 }
 BENCHMARK(BM_TouchedDeviceTick)
-    ->Args({10, 0, 0})
-    ->Args({10, 0, 1})
-    ->Args({10, 8, 1})
-    ->Args({125, 0, 0})
-    ->Args({125, 0, 1})
-    ->ArgNames({"elements", "modes", "casimir"})
+    ->Args({10, 0, 0, 0})
+    ->Args({10, 0, 1, 0})
+    ->Args({10, 0, 1, 1})
+    ->Args({10, 8, 1, 0})
+    ->Args({125, 0, 0, 0})
+    ->Args({125, 0, 1, 0})
+    ->Args({125, 0, 1, 1})
+    ->ArgNames({"elements", "modes", "casimir", "contact"})
     ->Iterations(2 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 

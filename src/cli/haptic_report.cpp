@@ -68,6 +68,7 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   loop.UpdateFrame();
   r.contact = loop.frame().contact;
   r.has_contact = scene.effects.HasContact();
+  r.on_beam = !IsDevice(scene.structure.kind);
   r.events = loop.frame().events;
   r.position_scale = settings.scaling.position_scale;
   r.force_scale = settings.scaling.force_scale;
@@ -141,7 +142,7 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
                      {"coupling_stiffness_n_per_m", r.coupling_n_per_m},
                      {"felt_coupling_n_per_m", r.felt_coupling_n_per_m},
                      {"felt_structure_n_per_m", r.felt_structure_n_per_m}};
-  json["contact"] = ContactJson(r.contact);
+  json["contact"] = ContactJson(r.contact, r.on_beam);
   json["contact_events"] = ContactEventsJson(r.events);
   json["device"] = {{"backend", r.hd_library.empty() ? "scripted" : "openhaptics"},
                     {"model", r.device_model},
@@ -172,7 +173,7 @@ void HapticReport::PrintResults(std::ostream& out) const {
   out << "events                " << r.events.proximity_warnings << " proximity warnings, "
       << r.events.contacts << " contacts, " << r.events.stuck << " stuck, " << r.events.releases
       << " releases\n";
-  if (r.has_contact) PrintContact(out, r.contact);
+  if (r.has_contact) PrintContact(out, r.contact, r.on_beam);
 }
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {

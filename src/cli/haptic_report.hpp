@@ -26,6 +26,7 @@ struct HapticResults {
   ContactSummary contact;    ///< at the end
   ContactEvents events;      ///< over the run
   bool has_contact = false;  ///< the scene's substrate contact: its state is printed
+  bool on_beam = true;       ///< a beam's contact has lengths along it; a device's has none
   double position_scale = 0.0, force_scale = 0.0;
   double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
   std::string realtime_note;

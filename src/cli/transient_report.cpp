@@ -57,6 +57,10 @@ TransientResult RunDevice(const Scene& scene, const TransientOptions& options, i
   }
   results.history = std::move(out.history);
   results.watched_component = out.watched_component;
+  if (const FrameSubstrateContact* contact = scene_forces.contact()) {
+    results.contact = contact->Summary();
+    results.contact_events = contact->events();
+  }
   return out.run;
 }
 
@@ -191,7 +195,7 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
   json["integrator"] = ToString(results_.integrator);
   json["time_step_s"] = results_.time_step_s;
   if (results_.contact) {
-    json["contact"] = ContactJson(*results_.contact);
+    json["contact"] = ContactJson(*results_.contact, !IsDevice(results_.kind));
     json["contact_events"] = ContactEventsJson(results_.contact_events);
   }
 }
@@ -222,7 +226,7 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ')
       << Scientific(results_.max_abs_uy) << " m\n";
   if (!results_.contact) return;
-  PrintContact(out, *results_.contact);
+  PrintContact(out, *results_.contact, !IsDevice(results_.kind));
   const ContactEvents& e = results_.contact_events;
   out << "contact events        " << e.proximity_warnings << " proximity warnings, " << e.contacts
       << " contacts, " << e.stuck << " stuck, " << e.releases << " releases\n";

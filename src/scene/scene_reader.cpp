@@ -410,10 +410,10 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
 
 // A device (a frame, or a parametric device's netlist) runs the static, modal, buckling,
 // transient, pull-in and haptic analyses, linear or with its members' stretching; of the effects
-// through the substrate it takes the electrodes, the Casimir and van der Waals pressures and the
-// gas film (CheckSurface says where each acts); contact and stiction act on a cantilever or a
-// bridge. Its netlist must be sound, and its loads and recorded points must name its nodes and
-// bodies.
+// through the substrate it takes the electrodes, the Casimir and van der Waals pressures, the
+// gas film (CheckSurface says where each acts) and the contact (in transients and haptics);
+// stiction acts on a cantilever or a bridge. Its netlist must be sound, and its loads and recorded
+// points must name its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
@@ -438,13 +438,13 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                 "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
   const SceneEffects& e = scene.effects;
-  for (const auto& [on, table] : {std::pair{IsOn(e.stiction), "effects.stiction"},
-                                  std::pair{e.HasContact(), "effects.contact"}}) {
-    r.Require(!on, table,
-              "acts on a cantilever or a bridge, not on " + kind +
-                  " (a device takes [effects.electrostatic], [[effects.combs]], [effects.casimir], "
-                  "[effects.van_der_waals] and [effects.squeeze_film])");
-  }
+  r.Require(!IsOn(e.stiction), "effects.stiction",
+            "acts on a cantilever or a bridge, not on " + kind +
+                " (a device takes [effects.contact], [effects.electrostatic], [[effects.combs]], "
+                "[effects.casimir], [effects.van_der_waals] and [effects.squeeze_film])");
+  r.Require(!IsOn(e.contact) || type == AnalysisType::kTransient || type == AnalysisType::kHaptic,
+            "effects.contact",
+            "on " + kind + " it acts in the \"transient\" and \"haptic\" analyses");
   if (IsOn(e.electrostatic)) {
     r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling,
               "effects.electrostatic",

@@ -101,7 +101,7 @@ struct TouchedDevice final : HapticSession::Touched {
     if (!scene.effects.combs.empty()) {
       all.Add(combs.emplace(model, MakeCombDrives(scene, model.description())));
     }
-    structure.emplace(model, probe, &all, options);
+    structure.emplace(model, probe, &all, forces.contact(), options);
   }
   HapticPhysics& physics() override { return *structure; }
 

@@ -1,21 +1,32 @@
 #include "mesh.hpp"
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 namespace cosmems::viewer {
 
+void Mesh::AddHexahedron(const std::array<Eigen::Vector3d, 8>& corner) {
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& c : corner) centre += c / 8.0;
+  // Each face by its four corners in order round its edge.
+  constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& f : kFaces) {
+    const Eigen::Vector3d &a = corner[f[0]], &b = corner[f[1]], &c = corner[f[2]],
+                          &d = corner[f[3]];
+    Eigen::Vector3d normal = (c - a).cross(d - b).normalized();
+    if (normal.dot(a + b + c + d - 4.0 * centre) < 0.0) normal = -normal;
+    AddQuad(a, b, c, d, normal);
+  }
+}
+
 void Mesh::AddBox(const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
-  auto corner = [&](int i) {
-    return Eigen::Vector3d((i & 1) ? high.x() : low.x(), (i & 2) ? high.y() : low.y(),
-                           (i & 4) ? high.z() : low.z());
-  };
-  // Each face by its four corners (bit 0: x, bit 1: y, bit 2: z).
-  AddQuad(corner(0), corner(4), corner(6), corner(2), -Eigen::Vector3d::UnitX());
-  AddQuad(corner(1), corner(3), corner(7), corner(5), Eigen::Vector3d::UnitX());
-  AddQuad(corner(0), corner(1), corner(5), corner(4), -Eigen::Vector3d::UnitY());
-  AddQuad(corner(2), corner(6), corner(7), corner(3), Eigen::Vector3d::UnitY());
-  AddQuad(corner(0), corner(2), corner(3), corner(1), -Eigen::Vector3d::UnitZ());
-  AddQuad(corner(4), corner(5), corner(7), corner(6), Eigen::Vector3d::UnitZ());
+  std::array<Eigen::Vector3d, 8> corner;
+  for (int i = 0; i < 8; ++i) {
+    corner[i] = Eigen::Vector3d((i & 1) ? high.x() : low.x(), (i & 2) ? high.y() : low.y(),
+                                (i & 4) ? high.z() : low.z());
+  }
+  AddHexahedron(corner);
 }
 
 void Mesh::AddEllipsoid(const Eigen::Vector3d& centre, const Eigen::Vector3d& radii) {

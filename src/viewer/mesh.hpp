@@ -25,6 +25,9 @@ struct Mesh {
                const Eigen::Vector3d& d, const Eigen::Vector3d& n) {
     for (const Eigen::Vector3d* p : {&a, &b, &c, &a, &c, &d}) AddVertex(*p, n);
   }
+  /// A hexahedron by its eight corners, corner i at the x end (i & 1), the y end (i & 2) and the
+  /// z end (i & 4) of its own edges; each face flat-shaded with its normal turned outward.
+  void AddHexahedron(const std::array<Eigen::Vector3d, 8>& corner);
   /// An axis-aligned box from `low` to `high`.
   void AddBox(const Eigen::Vector3d& low, const Eigen::Vector3d& high);
   /// An ellipsoid with semi-axes `radii` about `centre`, smooth-shaded.

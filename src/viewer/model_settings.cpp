@@ -12,6 +12,7 @@ ModelSettings ModelSettings::FromScene(const Scene& scene, const HapticPhysicsOp
   s.length_m = st.length;
   s.width_m = st.width;
   s.thickness_m = st.thickness;
+  s.design = DesignParameters(scene);
   s.substrate = st.gap.has_value();
   s.gap_m = st.gap.value_or(st.thickness);
   s.young_modulus_pa = scene.material.young_modulus;
@@ -35,23 +36,32 @@ ModelSettings ModelSettings::FromScene(const Scene& scene, const HapticPhysicsOp
 
 std::vector<SceneOverride> ModelSettings::ToOverrides() const {
   auto flag = [](bool on) { return std::string(on ? "true" : "false"); };
-  std::vector<SceneOverride> out = {
-      {"structure.kind", ToString(kind)},
-      {"structure.length", TomlFloat(length_m)},
-      {"structure.width", TomlFloat(width_m)},
-      {"structure.thickness", TomlFloat(thickness_m)},
-      {"material.young_modulus", TomlFloat(young_modulus_pa)},
-      {"material.density", TomlFloat(density_kg_m3)},
-      {"model.elements", std::to_string(elements)},
-      {"model.theory", ToString(theory)},
-      {"model.series_order", std::to_string(series_order)},
-  };
+  const bool device = IsDevice(kind);
+  std::vector<SceneOverride> out = {{"structure.kind", ToString(kind)}};
+  if (!device) {
+    out.push_back({"structure.length", TomlFloat(length_m)});
+    out.push_back({"structure.width", TomlFloat(width_m)});
+  }
+  for (const DesignParameter& p : design) {
+    out.push_back({"structure." + p.key,
+                   p.integer ? std::to_string(std::lround(p.value)) : TomlFloat(p.value)});
+  }
+  out.insert(out.end(), {
+                            {"structure.thickness", TomlFloat(thickness_m)},
+                            {"material.young_modulus", TomlFloat(young_modulus_pa)},
+                            {"material.density", TomlFloat(density_kg_m3)},
+                            {"model.elements", std::to_string(elements)},
+                            {"model.theory", ToString(theory)},
+                            {"model.series_order", std::to_string(series_order)},
+                        });
   // A gap can be given, not taken away: a scene without one gets it once the substrate is on.
   if (substrate) out.push_back({"structure.gap", TomlFloat(gap_m)});
   // Every effect's table with its parameters, on or off, so the loader checks them either way.
   out.push_back({"effects.contact.enabled", flag(contact)});
-  out.push_back({"effects.stiction.enabled", flag(stiction)});
-  out.push_back({"effects.stiction.adhesion_energy", TomlFloat(adhesion_energy_j_m2)});
+  if (!device) {
+    out.push_back({"effects.stiction.enabled", flag(stiction)});
+    out.push_back({"effects.stiction.adhesion_energy", TomlFloat(adhesion_energy_j_m2)});
+  }
   out.push_back({"effects.electrostatic.enabled", flag(electrostatic)});
   out.push_back({"effects.electrostatic.voltage", TomlFloat(voltage_v)});
   out.push_back({"effects.casimir.enabled", flag(casimir)});

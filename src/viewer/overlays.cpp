@@ -12,7 +12,7 @@ constexpr ImGuiWindowFlags kOverlay = ImGuiWindowFlags_NoDecoration |
 
 }  // namespace
 
-void DrawSurfaceWarning(const ContactSummary& contact, const Viewport& viewport) {
+void DrawSurfaceWarning(const ContactSummary& contact, const char* what, const Viewport& viewport) {
   if (contact.state == ContactState::kFree) return;
   const bool stuck = contact.Stuck();
   ImGui::SetNextWindowPos(ImVec2(viewport.x + 0.5f * viewport.width, viewport.y + 12.0f),
@@ -22,13 +22,13 @@ void DrawSurfaceWarning(const ContactSummary& contact, const Viewport& viewport)
   ImGui::Begin("Proximity warning", nullptr, kOverlay);
   switch (contact.state) {
     case ContactState::kNear:
-      ImGui::TextUnformatted("Warning: the beam is close to the substrate");
+      ImGui::Text("Warning: the %s is close to the substrate", what);
       break;
     case ContactState::kContact:
-      ImGui::TextUnformatted("Warning: the beam touches the substrate");
+      ImGui::Text("Warning: the %s touches the substrate", what);
       break;
     case ContactState::kStuck:
-      ImGui::Text("Failure: the beam is stuck to the substrate, %s", Describe(contact.shape));
+      ImGui::Text("Failure: the %s is stuck to the substrate, %s", what, Describe(contact.shape));
       ImGui::TextUnformatted("Press Reset Failure (or the stylus's second button) to free it");
       break;
     case ContactState::kFree:

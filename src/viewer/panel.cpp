@@ -50,7 +50,9 @@ PanelActions Panel::Draw(const PanelStatus& status, const LivePlots& plots, Disp
   ImGui::PushItemWidth(-150.0f);
   DrawState(status, actions);
   const float width = ImGui::GetContentRegionAvail().x;
-  plots.Draw(draft_.kind == StructureKind::kCantilever ? "tip deflection" : "midspan deflection",
+  plots.Draw(IsDevice(draft_.kind)                       ? "deflection at the target"
+             : draft_.kind == StructureKind::kCantilever ? "tip deflection"
+                                                         : "midspan deflection",
              width);
   DrawFigures(status);
   if (ImGui::CollapsingHeader("Structure and material", ImGuiTreeNodeFlags_DefaultOpen)) {
@@ -96,7 +98,8 @@ void Panel::DrawState(const PanelStatus& status, PanelActions& actions) const {
     ImGui::TextColored(StateColour(state), "STUCK, %s",
                        status.frame->contact.shape == StuckShape::kArc ? "arc-shaped" : "S-shaped");
   } else {
-    ImGui::TextColored(StateColour(state), "beam %s", ToString(state));
+    ImGui::TextColored(StateColour(state), "%s %s", IsDevice(draft_.kind) ? "device" : "beam",
+                       ToString(state));
   }
   if (status.frame) {
     const ContactEvents& e = status.frame->events;
@@ -120,6 +123,23 @@ void Panel::DrawFigures(const PanelStatus& status) const {
 
 bool Panel::DrawStructure() {
   bool done = false;
+  if (IsDevice(draft_.kind)) {
+    // A device keeps its kind; a parametric one edits its design keys, rebuilt on each edit.
+    ImGui::TextDisabled("structure: %s", ToString(draft_.kind));
+    for (DesignParameter& p : draft_.design) {
+      if (p.integer) {
+        int count = static_cast<int>(p.value);
+        ImGui::InputInt(p.key.c_str(), &count);
+        p.value = count;
+        done |= ImGui::IsItemDeactivatedAfterEdit();
+      } else {
+        done |= EditScaled((p.key + " [um]").c_str(), p.value, 1e6, "%.2f");
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", p.meaning.c_str());
+    }
+    done |= EditScaled("thickness [um]", draft_.thickness_m, 1e6, "%.3f");
+    return done | DrawSubstrateAndMaterial();
+  }
   int kind = draft_.kind == StructureKind::kCantilever ? 0 : 1;
   if (ImGui::Combo("structure", &kind, "cantilever\0bridge\0")) {
     draft_.kind = kind == 0 ? StructureKind::kCantilever : StructureKind::kBridge;
@@ -128,7 +148,11 @@ bool Panel::DrawStructure() {
   done |= EditScaled("length [um]", draft_.length_m, 1e6, "%.2f");
   done |= EditScaled("width [um]", draft_.width_m, 1e6, "%.2f");
   done |= EditScaled("thickness [um]", draft_.thickness_m, 1e6, "%.3f");
-  done |= ImGui::Checkbox("substrate", &draft_.substrate);
+  return done | DrawSubstrateAndMaterial();
+}
+
+bool Panel::DrawSubstrateAndMaterial() {
+  bool done = ImGui::Checkbox("substrate", &draft_.substrate);
   if (draft_.substrate) done |= EditScaled("gap [um]", draft_.gap_m, 1e6, "%.3f");
   done |= EditScaled("E [GPa]", draft_.young_modulus_pa, 1e-9, "%.1f");
   done |= EditScaled("density [kg/m3]", draft_.density_kg_m3, 1.0, "%.0f");
@@ -136,7 +160,8 @@ bool Panel::DrawStructure() {
 }
 
 bool Panel::DrawModel() {
-  bool done = EditInt("elements", draft_.elements, 1, 200);
+  bool done =
+      EditInt(IsDevice(draft_.kind) ? "elements a member" : "elements", draft_.elements, 1, 200);
   int theory = draft_.theory == Theory::kLinear ? 0 : 1;
   if (ImGui::Combo("theory", &theory, "linear\0stretching\0")) {
     draft_.theory = theory == 0 ? Theory::kLinear : Theory::kStretching;
@@ -153,8 +178,14 @@ bool Panel::DrawModel() {
 
 bool Panel::DrawEffects() {
   bool done = ImGui::Checkbox("contact", &draft_.contact);
-  done |= ImGui::Checkbox("stiction", &draft_.stiction);
-  if (draft_.stiction) done |= EditScaled("Gamma [J/m2]", draft_.adhesion_energy_j_m2, 1.0, "%.4f");
+  if (IsDevice(draft_.kind)) {
+    ImGui::TextDisabled("stiction: on beams");
+  } else {
+    done |= ImGui::Checkbox("stiction", &draft_.stiction);
+    if (draft_.stiction) {
+      done |= EditScaled("Gamma [J/m2]", draft_.adhesion_energy_j_m2, 1.0, "%.4f");
+    }
+  }
   done |= ImGui::Checkbox("electrostatic", &draft_.electrostatic);
   if (draft_.electrostatic) done |= EditScaled("voltage [V]", draft_.voltage_v, 1.0, "%.3f");
   done |= ImGui::Checkbox("Casimir", &draft_.casimir);

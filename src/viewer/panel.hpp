@@ -46,6 +46,7 @@ class Panel {
   void DrawState(const PanelStatus& status, PanelActions& actions) const;
   void DrawFigures(const PanelStatus& status) const;
   bool DrawStructure();
+  bool DrawSubstrateAndMaterial();
   bool DrawModel();
   bool DrawEffects();
 

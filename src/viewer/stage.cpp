@@ -2,9 +2,15 @@
 
 #include <algorithm>
 
+#include "cosmems/scene/frame_conversion.hpp"
+#include "device_stage.hpp"
+
 namespace cosmems::viewer {
 
 Stage BuildStage(const Scene& scene, const DisplaySpace& space) {
+  if (IsDevice(scene.structure.kind)) {
+    return BuildDeviceStage(scene, MakeStructureDescription(scene), space);
+  }
   const SceneStructure& s = scene.structure;
   const double length = s.length, width = s.width, half_t = 0.5 * s.thickness;
   // How far the substrate's slab goes down, and the supports' blocks reach along x [m].
@@ -46,6 +52,7 @@ void BuildStylus(const Eigen::Vector3d& probe_m, double radius_m, double length_
 }
 
 OrbitCamera DefaultCamera(const Scene& scene, const DisplaySpace& space) {
+  if (IsDevice(scene.structure.kind)) return DeviceCamera(MakeStructureDescription(scene), space);
   const double length = scene.structure.length;
   const Eigen::Vector3d target = space.ToWorld(Eigen::Vector3d(0.55 * length, 0.0, 0.0));
   return OrbitCamera(target, 1.6e6 * length, 0.5, 0.3);

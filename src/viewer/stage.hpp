@@ -13,7 +13,7 @@ namespace cosmems::viewer {
 /// is the gap below the beam's lower face, reaching 15 % of the length past each end and three
 /// widths to each side), the supports (a block under each clamped end) and the electrode (a
 /// pad on the substrate over its span, when the scene declares one). Without a gap there is no
-/// substrate and no electrode.
+/// substrate and no electrode. A device's stage is BuildDeviceStage's.
 struct Stage {
   Mesh substrate;
   Mesh supports;
@@ -28,7 +28,8 @@ void BuildStylus(const Eigen::Vector3d& probe_m, double radius_m, double length_
                  const DisplaySpace& space, Mesh& mesh);
 
 /// The view the viewer opens with, and always uses headless: from above the substrate, in
-/// front of the beam and a little past its far end, the whole beam and stage in sight.
+/// front of the beam and a little past its far end, the whole beam and stage in sight (a
+/// device's: DeviceCamera).
 OrbitCamera DefaultCamera(const Scene& scene, const DisplaySpace& space);
 
 }  // namespace cosmems::viewer

@@ -10,13 +10,18 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "beam_mesh.hpp"
+#include "comb_mesh.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
+#include "device_mesh.hpp"
+#include "device_stage.hpp"
 #include "overlays.hpp"
 #include "panel.hpp"
 #include "renderer.hpp"
@@ -73,6 +78,39 @@ class Window {
   GLFWwindow* window_ = nullptr;
 };
 
+// What the display needs of a device scene besides the frames: its netlist, the mesh whose
+// carriers the frames move, its combs and the node or body the built-in motions press
+// (device.target, default the first body), whose deflection the plot follows.
+struct DrawnDevice {
+  explicit DrawnDevice(const Scene& scene)
+      : structure(MakeStructureDescription(scene)),
+        mesh(structure),
+        combs(MakeCombDrives(scene, structure)) {
+    const std::string target = scene.device && scene.device->target ? *scene.device->target
+                               : structure.bodies.empty()           ? ""
+                                                                    : structure.bodies.front().name;
+    target_body = structure.FindBody(target);
+    target_node = structure.FindNode(target);
+  }
+
+  // u_y of the target [m] in `frame`.
+  double TargetDeflection(const HapticFrame& frame) const {
+    if (target_node >= 0) return NodeMotion(frame, mesh, target_node)[1];
+    if (target_body >= 0) return frame.carrier_motion_m(1, mesh.body_carrier[target_body]);
+    return 0.0;
+  }
+
+  StructureDescription structure;
+  FrameMesh mesh;
+  std::vector<CombDrive> combs;
+  int target_body = -1, target_node = -1;
+};
+
+std::optional<DrawnDevice> DeviceOf(const Scene& scene) {
+  if (!IsDevice(scene.structure.kind)) return std::nullopt;
+  return DrawnDevice(scene);
+}
+
 // The viewer's state between frames.
 class ViewerApp {
  public:
@@ -80,6 +118,7 @@ class ViewerApp {
       : options_(options),
         headless_(!options.screenshot.empty()),
         scene_(Load({})),
+        device_(DeviceOf(scene_)),
         settings_(ModelSettings::FromScene(scene_, HapticPhysicsOptions{})),
         panel_(settings_),
         camera_(DefaultCamera(scene_, space_)) {}
@@ -121,15 +160,7 @@ class ViewerApp {
     overrides.insert(overrides.end(), edits.begin(), edits.end());
     // Whatever analysis the scene declares, the viewer touches it.
     overrides.push_back({"analysis.type", "\"haptic\""});
-    Scene scene = LoadScene(options_.scene, overrides);
-    // It draws a beam; a device is touched from the command line.
-    if (IsDevice(scene.structure.kind)) {
-      throw std::invalid_argument(std::string("structure.kind = \"") +
-                                  ToString(scene.structure.kind) +
-                                  "\": the viewer draws a cantilever or a bridge; touch a device "
-                                  "with `cosmems run SCENE --set 'analysis.type=\"haptic\"'`");
-    }
-    return scene;
+    return LoadScene(options_.scene, overrides);
   }
 
   void StartSession(const Scene& scene) {
@@ -156,6 +187,7 @@ class ViewerApp {
       settings_ = draft;
       StartSession(next);
       scene_ = next;
+      device_ = DeviceOf(scene_);
       error_.clear();
     } catch (const std::exception& e) {
       error_ = e.what();
@@ -203,23 +235,31 @@ class ViewerApp {
 
     session_->UpdateFrame();
     const HapticFrame& frame = session_->frame();
-    const int node = scene_.structure.kind == StructureKind::kCantilever
-                         ? static_cast<int>(frame.deflection_m.size()) - 1
-                         : static_cast<int>(frame.deflection_m.size()) / 2;
-    plots_.Add(static_cast<float>(1e6 * frame.deflection_m[node]),
+    plots_.Add(static_cast<float>(1e6 * Deflection(frame)),
                static_cast<float>(1e6 * frame.probe_force_n.norm()));
 
     const Stage stage = BuildStage(scene_, space_);
-    BuildBeamMesh(frame, scene_.structure.width, scene_.structure.thickness, space_, beam_);
+    double size = scene_.structure.length;
+    if (device_) {
+      BuildDeviceMesh(frame, device_->mesh, device_->structure, space_, beam_, bodies_);
+      for (const CombDrive& comb : device_->combs) {
+        AddCombFingers(comb, device_->structure.bodies[comb.body], CombHalf::kMoving,
+                       frame.carrier_motion_m.col(device_->mesh.body_carrier[comb.body]), space_,
+                       bodies_);
+      }
+      size = FootprintOf(device_->structure).Extent();
+    } else {
+      BuildBeamMesh(frame, scene_.structure.width, scene_.structure.thickness, space_, beam_);
+    }
     const HapticSettings& settings = session_->opened().settings;
-    BuildStylus(frame.probe_m, settings.probe.radius, 0.25 * scene_.structure.length, space_,
-                stylus_);
+    BuildStylus(frame.probe_m, settings.probe.radius, 0.25 * size, space_, stylus_);
     renderer.BeginScene(width, height, viewport,
                         camera_.Projection(viewport.Aspect()) * camera_.View());
     renderer.Draw(stage.substrate, palette::kSubstrate);
     renderer.Draw(stage.electrode, palette::kElectrode);
     renderer.Draw(stage.supports, palette::kSupport);
     renderer.Draw(beam_, palette::kBeam);
+    if (device_) renderer.Draw(bodies_, palette::kBeam);
     renderer.Draw(stylus_, palette::kStylus);
     renderer.EndScene(width, height);
 
@@ -235,13 +275,21 @@ class ViewerApp {
     status.frame_interval_max_ms = 1e3 * longest_s;
     status.error = error_;
     const PanelActions actions = panel_.Draw(status, plots_, space_, static_cast<float>(height));
-    DrawSurfaceWarning(frame.contact, viewport);
+    DrawSurfaceWarning(frame.contact, device_ ? "device" : "beam", viewport);
     DrawViewCaption(viewport, space_.exaggeration, session_->hand() != nullptr);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (actions.reset) session_->RequestReset();
     if (actions.rebuild) Rebuild();
+  }
+
+  // What the plot follows [m]: a cantilever's tip, a bridge's midspan, a device's target.
+  double Deflection(const HapticFrame& frame) const {
+    if (device_) return device_->TargetDeflection(frame);
+    const int nodes = static_cast<int>(frame.deflection_m.size());
+    return frame
+        .deflection_m[scene_.structure.kind == StructureKind::kCantilever ? nodes - 1 : nodes / 2];
   }
 
   ViewerFigures Finish(GLFWwindow* window, std::uint64_t frames, double rate_hz, double longest_s,
@@ -276,13 +324,14 @@ class ViewerApp {
   const ViewerOptions& options_;
   const bool headless_;
   Scene scene_;
+  std::optional<DrawnDevice> device_;
   ModelSettings settings_;
   Panel panel_;
   DisplaySpace space_;
   OrbitCamera camera_;
   std::unique_ptr<ViewerSession> session_;
   LivePlots plots_;
-  Mesh beam_, stylus_;
+  Mesh beam_, bodies_, stylus_;
   std::string error_;
   bool dragging_ = false;
   Eigen::Vector3d drag_point_ = Eigen::Vector3d::Zero();

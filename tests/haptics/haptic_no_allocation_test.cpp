@@ -13,6 +13,7 @@
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/haptics/safety_layer.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "haptics/haptic_test_beam.hpp"
 #include "structure/test_frames.hpp"
 
@@ -57,20 +58,31 @@ TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing
 TEST_P(HapticNoAllocationTest, ADevicesTicksAllocateNothing) {
   const FrameModel model(test::FoldedFlexure(100e-6, 4));
   FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{2e-6});
+  ContactOptions substrate;
+  substrate.gap = 2e-6;
+  substrate.separation = 2e-8;
+  FrameSubstrateContact contact(model, substrate);
+  ForceSum forces;
+  forces.Add(casimir);
+  forces.Add(contact);
   HapticPhysicsOptions physics;
   physics.path = GetParam();
   physics.modes = 8;
   physics.damping = DampingModel::QualityFactor(100);
-  HapticStructure structure(model, ProbeOptions{2e-6, 5.0}, &casimir, physics);
+  HapticStructure structure(model, ProbeOptions{2e-6, 50.0}, &forces, &contact, physics);
+  HapticFrame frame = structure.MakeFrame();
   int tick = 0;
-  // 300 ticks from 1 um above the shuttle's upper face to 1 um into it, 300 back up.
+  // 300 ticks from 1 um above the shuttle's upper face to 3 um into it, the shuttle pressed onto
+  // the substrate 2 um below, 300 back up, each published to the display's frame.
   const long allocations = test::AllocationsDuring(600, [&] {
     const double s = tick < 300 ? tick / 300.0 : 1.0 - (tick - 300) / 300.0;
-    const Eigen::Vector3d probe(5e-6, 1e-6 + 2e-6 + 1e-6 - 2e-6 * s, 3e-6);
+    const Eigen::Vector3d probe(5e-6, 1e-6 + 2e-6 + 1e-6 - 4e-6 * s, 3e-6);
     (void)structure.Advance(probe, 1e-3 * tick++);
+    structure.Fill(frame);
   });
   EXPECT_EQ(allocations, 0);
   EXPECT_EQ(structure.status(), Status::kOk);
+  EXPECT_EQ(frame.events.contacts, 1);
 }
 
 std::string PathName(const ::testing::TestParamInfo<TimePath>& path) {

@@ -167,7 +167,7 @@ TEST(HapticStructureTest, ACantileverMemberIsPressedAsTheValidatedBeam) {
   const FrameModel frame(CantileverFrame());
   const BeamModel<2> beam_model = test::HapticCantilever();
   const ProbeOptions probe{test::kProbeRadius, 5.0};
-  HapticStructure structure(frame, probe, nullptr);
+  HapticStructure structure(frame, probe, nullptr, nullptr);
   HapticBeam<2> beam(beam_model, probe, nullptr, nullptr);
   const double series = 5.0 * test::ReferenceTipStiffness() / (5.0 + test::ReferenceTipStiffness());
   for (const double depth : {0.5e-6, 0.8e-6, 0.2e-6, -1e-6}) {
@@ -204,7 +204,7 @@ TEST(HapticStructureTest, APlateOnFourBeamsIsItsSuspensionInSeriesWithTheCouplin
   const test::PlateOnFourBeams plate;
   const FrameModel model(plate.structure);
   const double k_c = 5.0 * plate.k, depth = 0.4e-6;
-  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr);
+  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
   const Press press = PressAt(structure, {0.0, 1e-6 + kRadius - depth, 0.0});
   const double series = k_c * plate.k / (k_c + plate.k);
   // The frame is exact for the clamped-guided beams to 1e-10 (frame_model_test.cpp).
@@ -217,13 +217,34 @@ TEST(HapticStructureTest, APlateOnFourBeamsIsItsSuspensionInSeriesWithTheCouplin
   EXPECT_NEAR(structure.local_model().clearance_m, 1e-6, 1e-12);
 }
 
+// What the display draws: the frame's motion of each carrier, the pressed plate sunk by the
+// probe's force over its suspension's stiffness, without a tilt (pressed at its centre), and the
+// anchors' nodes still.
+TEST(HapticStructureTest, TheFrameShowsThePlateSunkByTheForceOverItsStiffness) {
+  const test::PlateOnFourBeams plate;
+  const FrameModel model(plate.structure);
+  HapticStructure structure(model, ProbeOptions{kRadius, 5.0 * plate.k}, nullptr, nullptr);
+  const Press press = PressAt(structure, {0.0, 1e-6 + kRadius - 0.4e-6, 0.0});
+  HapticFrame frame = structure.MakeFrame();
+  ASSERT_EQ(frame.carrier_motion_m.cols(), static_cast<Eigen::Index>(model.mesh().carriers.size()));
+  const Eigen::Matrix<double, 6, 1> body = frame.carrier_motion_m.col(model.mesh().body_carrier[0]);
+  const double sunk = press.force_n / plate.k;
+  EXPECT_NEAR(body[1], -sunk, 1e-9 * sunk);
+  EXPECT_LT(body.tail<3>().norm(), 1e-9 * sunk / 1e-6);
+  for (std::size_t c = 0; c < model.mesh().carriers.size(); ++c) {
+    if (model.mesh().carriers[c].anchor == AnchorMask{true, true, true, true, true, true}) {
+      EXPECT_EQ(frame.carrier_motion_m.col(static_cast<Eigen::Index>(c)).norm(), 0.0);
+    }
+  }
+}
+
 TEST(HapticStructureTest, APushOnTheShuttlesSideMeetsTheFlexuresInPlaneStiffness) {
   FoldedFlexureDesign design;
   design.material = test::Poly();
   design.elements = 4;
   const FrameModel model(FoldedFlexure(design));
   const double k_x = design.Stiffness(), k_c = 5.0 * k_x, depth = 0.3e-6;
-  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr);
+  HapticStructure structure(model, ProbeOptions{kRadius, k_c}, nullptr, nullptr);
   // The +x side of the 40 um shuttle, on its centre line: a push along -x without a turn.
   const Press press = PressAt(structure, {20e-6 + kRadius - depth, 0.0, 0.0});
   const double series = k_c * k_x / (k_c + k_x);

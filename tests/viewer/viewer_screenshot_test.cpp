@@ -1,15 +1,19 @@
 // The headless viewer's last frame, read back with an independent PNG reader: its size, the beam
-// and the substrate where the display's camera puts them, and the figures it reported.
+// or the device and the substrate where the display's camera puts them, and the figures it
+// reported.
 #include <gtest/gtest.h>
 #include <stb_image.h>
 
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "device_stage.hpp"
 #include "stage.hpp"
 #include "viewport.hpp"
 
@@ -43,17 +47,31 @@ bool LooksLikeBeam(const Eigen::Vector3i& c) {
 bool LooksLikeSubstrate(const Eigen::Vector3i& c) {
   return c[2] > 80 && c[2] > 1.4 * c[1] && c[1] > 1.2 * c[0];
 }
+// The electrode gold (red and green over blue), the supports grey (three channels alike).
+bool LooksLikeElectrode(const Eigen::Vector3i& c) {
+  return c[0] > 80 && c[1] > 0.7 * c[0] && c[1] > 2.0 * c[2];
+}
+bool LooksLikeSupport(const Eigen::Vector3i& c) {
+  return c[0] > 60 && c.maxCoeff() < 1.15 * c.minCoeff();
+}
+
+// The figures a headless run printed (OUT_PREFIX.json); null when there are none.
+nlohmann::json Figures(const std::string& output) {
+  std::ifstream in(output + ".json");
+  return in ? nlohmann::json::parse(in) : nlohmann::json();
+}
 
 class HeadlessViewerTest : public ::testing::Test {
  protected:
   void SetUp() override { Open(COSMEMS_VIEWER_OUTPUT, {}); }
 
-  void Open(const std::string& output, const std::vector<SceneOverride>& overrides) {
+  void Open(const std::string& output, const std::vector<SceneOverride>& overrides,
+            const std::string& scene = "cantilever-haptic") {
     image_ = Read(output + ".png");
     ASSERT_NE(image_.pixels, nullptr) << "no screenshot at " << output << ".png";
     std::vector<SceneOverride> all = {{"analysis.type", "\"haptic\""}};
     all.insert(all.end(), overrides.begin(), overrides.end());
-    scene_ = LoadScene("cantilever-haptic", all);
+    scene_ = LoadScene(scene, all);
   }
 
   // Where the display's camera puts a point of the beam's axes [m].
@@ -114,9 +132,8 @@ class HeadlessArcViewerTest : public HeadlessViewerTest {
 };
 
 TEST_F(HeadlessArcViewerTest, TheBeamStuckByItsTipIsDrawnBentOntoTheSubstrate) {
-  std::ifstream in(COSMEMS_VIEWER_ARC_OUTPUT ".json");
-  ASSERT_TRUE(in) << "no figures at " COSMEMS_VIEWER_ARC_OUTPUT ".json";
-  const nlohmann::json json = nlohmann::json::parse(in);
+  const nlohmann::json json = Figures(COSMEMS_VIEWER_ARC_OUTPUT);
+  ASSERT_FALSE(json.is_null()) << "no figures at " COSMEMS_VIEWER_ARC_OUTPUT ".json";
   EXPECT_EQ(json["contact_state"], "stuck");
   EXPECT_EQ(json["contact_shape"], "arc");
   const double length = scene_.structure.length;
@@ -131,12 +148,83 @@ TEST_F(HeadlessArcViewerTest, TheBeamStuckByItsTipIsDrawnBentOntoTheSubstrate) {
   }
 }
 
+// The plate on four serpentine springs, pressed onto the substrate by the stylus a second into the
+// press, with contact (Viewer.HeadlessDeviceRun). Its electrode is a pad under exactly the
+// plate's footprint: at rest, 2 um under the plate's lower face (10 um on the screen), the pad
+// shows under the plate's near edge, as far in as the view reaches under it at the camera's pitch
+// (0.5 rad: 18 um); lying on the substrate the plate hides it, and a point 3 um inside the near
+// edge on the pad shows the plate's side face. The anchors stand where the netlist puts them,
+// the substrate beyond the footprint.
+class HeadlessDeviceViewerTest : public HeadlessViewerTest {
+ protected:
+  void SetUp() override {
+    Open(COSMEMS_VIEWER_DEVICE_OUTPUT,
+         {{"effects.contact.enabled", "true"}, {"effects.electrostatic.voltage", "2.0"}},
+         "serpentine-pullin");
+  }
+};
+
+TEST_F(HeadlessDeviceViewerTest, ThePlateLyingOnTheSubstrateHidesItsElectrode) {
+  const nlohmann::json json = Figures(COSMEMS_VIEWER_DEVICE_OUTPUT);
+  ASSERT_FALSE(json.is_null()) << "no figures at " COSMEMS_VIEWER_DEVICE_OUTPUT ".json";
+  EXPECT_EQ(json["scene"], "serpentine-pullin");
+  EXPECT_EQ(json["contact_state"], "contact");
+  EXPECT_EQ(json["physics"]["failed_ticks"], 0);
+  const DisplaySpace space;
+  const OrbitCamera camera = DefaultCamera(scene_, space);
+  const double pad = -1e-6 - *scene_.structure.gap + 0.02 * *scene_.structure.gap;
+  // The edge of the footprint nearest the eye, and a point 3 um inside it on the pad.
+  Eigen::Vector3d nearest = Eigen::Vector3d::Zero(), inward = Eigen::Vector3d::Zero();
+  double closest = std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3d& edge :
+       {Eigen::Vector3d(50e-6, pad, 0.0), Eigen::Vector3d(-50e-6, pad, 0.0),
+        Eigen::Vector3d(0.0, pad, 50e-6), Eigen::Vector3d(0.0, pad, -50e-6)}) {
+    const double distance = (space.ToWorld(edge) - camera.Eye()).norm();
+    if (distance < closest) {
+      closest = distance;
+      nearest = edge;
+      inward = -edge.normalized();
+    }
+  }
+  for (double along : {-25e-6, 25e-6}) {
+    const Eigen::Vector3d side(inward.z(), 0.0, -inward.x());
+    const Eigen::Vector2d pixel = Pixel(nearest + 3e-6 * inward + along * side);
+    const Eigen::Vector3i colour = image_.At(pixel);
+    EXPECT_TRUE(LooksLikeBeam(colour))
+        << "at pixel " << pixel.transpose() << ": colour " << colour.transpose();
+    EXPECT_FALSE(LooksLikeElectrode(colour));
+  }
+}
+
+TEST_F(HeadlessDeviceViewerTest, TheAnchorsAndTheSubstrateAreWhereTheCameraPutsThem) {
+  const StructureDescription structure = MakeStructureDescription(scene_);
+  int anchors = 0;
+  for (const StructureNode& node : structure.nodes) {
+    if (node.anchor != AnchorOf(Support::kClamped)) continue;
+    ++anchors;
+    // The anchor's top (12 um square) at its four quarter points: the spring ending on it covers
+    // one side of it at most.
+    int grey = 0;
+    for (const Eigen::Vector3d& quarter :
+         {Eigen::Vector3d(3e-6, 1e-6, 3e-6), Eigen::Vector3d(-3e-6, 1e-6, 3e-6),
+          Eigen::Vector3d(3e-6, 1e-6, -3e-6), Eigen::Vector3d(-3e-6, 1e-6, -3e-6)}) {
+      grey += LooksLikeSupport(image_.At(Pixel(node.position + quarter)));
+    }
+    EXPECT_GE(grey, 2) << node.name;
+  }
+  EXPECT_EQ(anchors, 4);
+  // Beyond the footprint's corner, inside the substrate's margin.
+  const Footprint f = FootprintOf(structure);
+  const double top = f.lowest_face_m - *scene_.structure.gap;
+  const Eigen::Vector2d pixel = Pixel({f.high.x() + 0.05 * f.Extent(), top, 0.0});
+  EXPECT_TRUE(LooksLikeSubstrate(image_.At(pixel))) << image_.At(pixel).transpose();
+}
+
 // The figures are reported (the rates are measured, never asserted here: the machine decides
 // them), with the scripted press's events.
 TEST(HeadlessViewerFiguresTest, TheRunReportsItsDisplayAndServoFigures) {
-  std::ifstream in(COSMEMS_VIEWER_OUTPUT ".json");
-  ASSERT_TRUE(in) << "no figures at " COSMEMS_VIEWER_OUTPUT ".json";
-  const nlohmann::json json = nlohmann::json::parse(in);
+  const nlohmann::json json = Figures(COSMEMS_VIEWER_OUTPUT);
+  ASSERT_FALSE(json.is_null()) << "no figures at " COSMEMS_VIEWER_OUTPUT ".json";
   EXPECT_EQ(json["frames"], COSMEMS_VIEWER_FRAMES);
   EXPECT_EQ(json["input"], "script");
   EXPECT_GT(json["display_rate_hz"].get<double>(), 0.0);

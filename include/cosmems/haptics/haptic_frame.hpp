@@ -17,9 +17,13 @@ struct HapticFrame {
   Eigen::VectorXd node_x_m;                                 ///< a beam's node positions on its axis
   Eigen::VectorXd deflection_m;                             ///< a beam's u_y at each node
   Eigen::VectorXd rotation_rad;                             ///< a beam's theta_z at each node
-  ContactSummary contact;                                   ///< with the substrate
-  ContactEvents events;                                     ///< counted since the start
-  Status status = Status::kOk;                              ///< of the tick's physics
+  /// A structure's motion, one column per carrier of its FrameMesh (each free node, then each
+  /// body): u [m] then theta [rad] about the carrier's reference point, global axes. Empty for a
+  /// beam.
+  Eigen::Matrix<double, 6, Eigen::Dynamic> carrier_motion_m;
+  ContactSummary contact;       ///< with the substrate
+  ContactEvents events;         ///< counted since the start
+  Status status = Status::kOk;  ///< of the tick's physics
 };
 
 }  // namespace cosmems

@@ -11,6 +11,7 @@
 #include "cosmems/structure/frame_stretching_force.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
 #include "cosmems/surface/frame_squeeze_film.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 
 namespace cosmems {
@@ -18,8 +19,8 @@ namespace cosmems {
 /// The nonlinear forces a validated device scene declares besides its electrodes (which each
 /// analysis drives its own way: ramped with the loads, held by the pull-in's path, scaled by the
 /// voltage in time): the members' stretching, the Casimir and van der Waals pressures under all
-/// of the device and the gas film. An effect whose table is absent is never built, so it costs
-/// nothing. The model must outlive the forces.
+/// of the device, the gas film and the substrate's contact. An effect whose table is absent is
+/// never built, so it costs nothing. The model must outlive the forces.
 class FrameSceneForces {
  public:
   FrameSceneForces(const FrameModel& model, const Scene& scene) {
@@ -37,20 +38,25 @@ class FrameSceneForces {
     if (IsOn(e.squeeze_film)) {
       all_.Add(film_.emplace(model, MakeSqueezeFilmOptions(scene), substrate.gap));
     }
+    if (IsOn(e.contact)) all_.Add(contact_.emplace(model, MakeContactOptions(scene)));
   }
   FrameSceneForces(const FrameSceneForces&) = delete;
   FrameSceneForces& operator=(const FrameSceneForces&) = delete;
 
   /// The forces at rest, element by element (statics and pull-in): stretching and the pressures.
   const std::vector<FrameElementForce*>& elements() const { return elements_; }
-  /// Every force, the film included (a transient's); the run may add its electrodes.
+  /// Every force, the film and the contact included (a transient's); the run may add its
+  /// electrodes.
   ForceSum& all() { return all_; }
+  /// The substrate's contact, for its state and events (nullptr: not declared).
+  FrameSubstrateContact* contact() { return contact_ ? &*contact_ : nullptr; }
 
  private:
   std::optional<FrameStretchingForce> stretching_;
   std::optional<FrameGapForce<CasimirPressure>> casimir_;
   std::optional<FrameGapForce<VanDerWaalsPressure>> van_der_waals_;
   std::optional<FrameSqueezeFilm> film_;
+  std::optional<FrameSubstrateContact> contact_;
   std::vector<FrameElementForce*> elements_;
   ForceSum all_;
 };

@@ -18,6 +18,16 @@
 
 namespace cosmems {
 
+/// Which points of the faces over the substrate a FrameGapPoints holds.
+enum class FrameGapLayout {
+  kQuadrature,  ///< Gauss-Legendre points over the electrodes, with their areas: for pressures
+  /// Where a face can touch the substrate first, with no area: each member element's nodes and
+  /// quarter points on its lower face's centre line (the element's end only at its member's last
+  /// element, so a node is held once), each body's four lower corners (a rigid plate's lowest
+  /// points, however it tilts). For the substrate contact (FrameSubstrateContact).
+  kContact,
+};
+
 /// Where a force across the gap acts on a frame: the substrate plane `gap` below the structure's
 /// lowest face at rest, and the electrodes on it (by default one under all of the structure).
 struct FrameGapOptions {
@@ -26,6 +36,7 @@ struct FrameGapOptions {
   /// Gauss-Legendre points along each element's part over an electrode, and along each side of
   /// a body's rectangle over one.
   int points = 4;
+  FrameGapLayout layout = FrameGapLayout::kQuadrature;
 };
 
 /// The quadrature points of a frame's faces over the electrodes of the substrate, each with its
@@ -71,15 +82,29 @@ class FrameGapPoints {
       }
     }
     substrate_m_ = LowestFace() - options.gap;
-    const GaussLegendre rule = GaussLegendre::Of(options.points);
+    const bool contact = options.layout == FrameGapLayout::kContact;
+    // The contact's points carry no weight (no area): they are held, not integrated.
+    const GaussLegendre rule = contact ? GaussLegendre{{0.0, 0.25, 0.5, 0.75}, {0.0, 0.0, 0.0, 0.0}}
+                                       : GaussLegendre::Of(options.points);
+    GaussLegendre last = rule;  // a member's last element: its far end too
+    if (contact) {
+      last.points.push_back(1.0);
+      last.weights.push_back(0.0);
+    }
+    const GaussLegendre corners{{0.0, 1.0}, {0.0, 0.0}};
+    const std::vector<FrameMesh::Element>& elements = model.mesh().elements;
     first_point_.push_back(0);
     for (int e = 0; e < model.ElementCount(); ++e) {
-      for (const Electrode& electrode : electrodes) PlaceOnElement(e, electrode, rule);
+      const bool member_ends =
+          e + 1 == model.ElementCount() || elements[e + 1].member != elements[e].member;
+      for (const Electrode& electrode : electrodes) {
+        PlaceOnElement(e, electrode, contact && member_ends ? last : rule);
+      }
       first_point_.push_back(static_cast<int>(points_.size()));
     }
     for (std::size_t b = 0; b < model.description().bodies.size(); ++b) {
       for (const Electrode& electrode : electrodes) {
-        PlaceOnBody(static_cast<int>(b), electrode, rule);
+        PlaceOnBody(static_cast<int>(b), electrode, contact ? corners : rule);
       }
     }
   }
