@@ -9,6 +9,7 @@
 #include "cosmems/core/validation.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/scene/device_target.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/csv_trajectory.hpp"
@@ -51,10 +52,7 @@ PressedPoint BeamPoint(const Scene& scene) {
 PressedPoint DevicePoint(const Scene& scene) {
   const StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure);
-  const std::string target =
-      scene.device.value_or(SceneDevice{})
-          .target.value_or(structure.bodies.empty() ? std::string()
-                                                    : structure.bodies.front().name);
+  const std::string target = DeviceTarget(scene, structure);
   const int body = structure.FindBody(target);
   const int node = structure.FindNode(target);
   if (body < 0 && node < 0) {

@@ -18,6 +18,7 @@
 #include "beam_mesh.hpp"
 #include "comb_mesh.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
+#include "cosmems/scene/device_target.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "device_mesh.hpp"
@@ -86,9 +87,7 @@ struct DrawnDevice {
       : structure(MakeStructureDescription(scene)),
         mesh(structure),
         combs(MakeCombDrives(scene, structure)) {
-    const std::string target = scene.device && scene.device->target ? *scene.device->target
-                               : structure.bodies.empty()           ? ""
-                                                                    : structure.bodies.front().name;
+    const std::string target = DeviceTarget(scene, structure);
     target_body = structure.FindBody(target);
     target_node = structure.FindNode(target);
   }
