@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
+#include "cosmems/structure/serpentine.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "reference_beam.hpp"
 
@@ -47,6 +49,52 @@ BENCHMARK(BM_Release)
     ->Arg(400)
     ->ArgName("elements")
     ->Unit(benchmark::kMicrosecond);
+
+// A device's release (model set-up excluded): pressed onto the substrate all over and let go
+// (FrameSubstrateContact from PressedDisplacement()). `device` 0: the cantilever above as a member
+// of a frame, 100 elements (its free span is the beam's, node for node); 1: the serpentine plate
+// (SerpentineDesign's defaults: 4 springs of 4 turns, 4 elements a segment) over a 2 um gap at
+// Gamma = 1e-3 J/m^2, its springs stuck along their spans and the plate held. Counters: whether
+// it stays stuck, the member's free span, the Newton iterations.
+void BM_DeviceRelease(benchmark::State& state) {
+  const bool serpentine = state.range(0) == 1;
+  StructureDescription structure;
+  if (serpentine) {
+    structure = Serpentine(SerpentineDesign{});
+  } else {
+    structure.nodes = {{"clamp", Eigen::Vector3d::Zero(), AnchorOf(Support::kClamped)},
+                       {"tip", Eigen::Vector3d(kLength, 0.0, 0.0), AnchorMask{}}};
+    structure.members.push_back({0, 1, Material{169e9, 2330.0, 0.22},
+                                 RectangularSection{20e-6, 2e-6}, 100, Eigen::Vector3d::UnitY()});
+  }
+  const FrameModel model(structure);
+  ContactOptions options;
+  options.gap = kGap;
+  options.stiction = true;
+  options.adhesion_energy = serpentine ? 1e-3 : kGamma;
+  NonlinearStaticOptions solve_options;
+  solve_options.newton.max_settles = 100000;
+  bool stuck = false;
+  double span = 0.0;
+  int iterations = 0;
+  for (auto _ : state) {
+    FrameSubstrateContact contact(model, options);
+    contact.StickAll();
+    solve_options.start = contact.PressedDisplacement();
+    NonlinearStaticSolve solve(model.Stiffness(), contact, solve_options, nullptr);
+    const NonlinearStaticSolution solution =
+        solve.Solve(Eigen::VectorXd::Zero(model.FreeDofCount()));
+    if (solution.status != Status::kOk) state.SkipWithError("release failed");
+    stuck = contact.Summary().Stuck();
+    span = contact.MemberSummary(0).detached_length_m;
+    iterations = solution.iterations;
+  }
+  state.counters["stuck"] = stuck;
+  if (!serpentine) state.counters["span_um"] = 1e6 * span;
+  state.counters["newton"] = iterations;
+  state.counters["dofs"] = model.FreeDofCount();
+}
+BENCHMARK(BM_DeviceRelease)->Arg(0)->Arg(1)->ArgName("device")->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 }  // namespace cosmems

@@ -163,11 +163,12 @@ BENCHMARK(BM_TouchedBeamTick)
 // The tick the hand feels on a device (HapticStructure): the folded-flexure resonator with
 // `elements` per beam (8 beams: 80 elements at 10, 1000 at 125) over a substrate 2 um below,
 // with the Casimir force (`casimir` = 1) or the probe alone (0), and with the substrate's contact
-// (`contact` = 1: the coupling 50 N/m presses the shuttle onto the substrate, 4 um deep) or
-// without it (the coupling 5 N/m, 2 um deep, the shuttle never reaching the substrate); the probe
-// (radius 2 um) presses the shuttle's upper face 3 um off its centre and lifts 1 um clear, over and
-// over, on the full model's path (generalised-alpha, 2 steps a tick) or the modal one (`modes`
-// modes, Q = 100). Stiction does not act on devices.
+// (`contact` = 1: the coupling 50 N/m presses the shuttle onto the substrate, 4 um deep; 2: with
+// stiction too, Gamma = 1e-6 J/m^2, which holds the shuttle while the probe presses and lets its
+// springs pull it off when the probe lifts) or without it (the coupling 5 N/m, 2 um deep, the
+// shuttle never reaching the substrate); the probe (radius 2 um) presses the shuttle's upper face
+// 3 um off its centre and lifts 1 um clear, over and over, on the full model's path
+// (generalised-alpha, 2 steps a tick) or the modal one (`modes` modes, Q = 100).
 void BM_TouchedDeviceTick(benchmark::State& state) {
   FoldedFlexureDesign design;
   design.elements = static_cast<int>(state.range(0));
@@ -176,6 +177,8 @@ void BM_TouchedDeviceTick(benchmark::State& state) {
   ContactOptions substrate;
   substrate.gap = kGap;
   substrate.separation = 1e-2 * kGap;  // the scenes' default beside a surface pressure
+  substrate.stiction = state.range(3) == 2;
+  substrate.adhesion_energy = 1e-6;
   std::optional<FrameSubstrateContact> contact;
   ForceSum forces;
   if (state.range(2) != 0) forces.Add(casimir);
@@ -198,15 +201,21 @@ void BM_TouchedDeviceTick(benchmark::State& state) {
   state.counters["dofs"] = model.FreeDofCount();
   state.counters["band"] = model.Stiffness().bandwidth();
   if (contact) state.counters["contacts"] = static_cast<double>(contact->events().contacts);
+  if (substrate.stiction) {
+    state.counters["stuck_events"] = static_cast<double>(contact->events().stuck);
+    state.counters["releases"] = static_cast<double>(contact->events().releases);
+  }
 }
 BENCHMARK(BM_TouchedDeviceTick)
     ->Args({10, 0, 0, 0})
     ->Args({10, 0, 1, 0})
     ->Args({10, 0, 1, 1})
+    ->Args({10, 0, 1, 2})
     ->Args({10, 8, 1, 0})
     ->Args({125, 0, 0, 0})
     ->Args({125, 0, 1, 0})
     ->Args({125, 0, 1, 1})
+    ->Args({125, 0, 1, 2})
     ->ArgNames({"elements", "modes", "casimir", "contact"})
     ->Iterations(2 * kCycle)
     ->Unit(benchmark::kMicrosecond);

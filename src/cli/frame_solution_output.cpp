@@ -5,13 +5,10 @@
 #include "text_format.hpp"
 
 namespace cosmems::internal {
-namespace {
 
 nlohmann::ordered_json MotionJson(const FrameModel::Motion& m) {
   return {{"displacement", ToJson(m.head<3>())}, {"rotation", ToJson(m.tail<3>())}};
 }
-
-}  // namespace
 
 void AddFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                       nlohmann::ordered_json& json) {
@@ -57,21 +54,24 @@ void PrintFrameSolution(const StructureDescription& structure, const FrameStatic
   }
 }
 
-void WriteFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
-                        const std::filesystem::path& directory) {
+void WriteFrameMotions(const StructureDescription& structure,
+                       const std::vector<FrameModel::Motion>& nodes,
+                       const std::vector<FrameModel::Motion>& bodies,
+                       const std::filesystem::path& directory) {
   CsvFile motions(directory / "nodes.csv", "name,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
   auto row = [&](const std::string& name, const FrameModel::Motion& m) {
     std::vector<std::string> cells = {name};
     for (int k = 0; k < 6; ++k) cells.push_back(CsvFile::Number(m[k]));
     motions.Row(cells);
   };
-  for (std::size_t n = 0; n < structure.nodes.size(); ++n) {
-    row(structure.nodes[n].name, solution.nodes[n]);
-  }
-  for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
-    row(structure.bodies[b].name, solution.bodies[b]);
-  }
+  for (std::size_t n = 0; n < nodes.size(); ++n) row(structure.nodes[n].name, nodes[n]);
+  for (std::size_t b = 0; b < bodies.size(); ++b) row(structure.bodies[b].name, bodies[b]);
   motions.Close();
+}
+
+void WriteFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
+                        const std::filesystem::path& directory) {
+  WriteFrameMotions(structure, solution.nodes, solution.bodies, directory);
   CsvFile reactions(directory / "reactions.csv", "node,fx_n,fy_n,fz_n,mx_nm,my_nm,mz_nm");
   for (const FrameReaction& r : solution.reactions) {
     std::vector<std::string> cells = {structure.nodes[r.node].name};

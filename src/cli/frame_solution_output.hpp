@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <ostream>
+#include <vector>
 
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/structure/structure_description.hpp"
@@ -13,6 +14,9 @@ namespace cosmems::internal {
 // motions of its nodes and bodies, the reactions at its anchors and the members' largest
 // deflection, stress and axial force.
 
+/// {displacement, rotation} of a node or a body's centre.
+nlohmann::ordered_json MotionJson(const FrameModel::Motion& m);
+
 /// max_deflection, max_stress_pa, axial_force_n, nodes, bodies, reactions.
 void AddFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                       nlohmann::ordered_json& json);
@@ -20,6 +24,12 @@ void AddFrameSolution(const StructureDescription& structure, const FrameStaticSo
 /// The same as text, one line each.
 void PrintFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                         std::ostream& out);
+
+/// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body.
+void WriteFrameMotions(const StructureDescription& structure,
+                       const std::vector<FrameModel::Motion>& nodes,
+                       const std::vector<FrameModel::Motion>& bodies,
+                       const std::filesystem::path& directory);
 
 /// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body;
 /// reactions.csv: node, fx_n, fy_n, fz_n, mx_nm, my_nm, mz_nm at every anchored node.

@@ -16,6 +16,7 @@
 #include "frame_buckling_report.hpp"
 #include "frame_modal_report.hpp"
 #include "frame_pullin_report.hpp"
+#include "frame_release_report.hpp"
 #include "frame_static_report.hpp"
 #include "haptic_report.hpp"
 #include "modal_report.hpp"
@@ -48,8 +49,7 @@ std::string OneLine(std::string text) {
 }
 
 std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs the static, modal, buckling, transient, pull-in and haptic analyses (the scene
-  // reader refuses the others).
+  // A device runs every analysis.
   if (IsDevice(scene.structure.kind)) {
     if (scene.analysis.type == AnalysisType::kHaptic) return internal::HapticReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kPullin)
@@ -59,6 +59,9 @@ std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
       return internal::TransientReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kBuckling) {
       return internal::FrameBucklingReport::Run(scene);
+    }
+    if (scene.analysis.type == AnalysisType::kRelease) {
+      return internal::FrameReleaseReport::Run(scene);
     }
     return internal::FrameStaticReport::Run(scene);
   }

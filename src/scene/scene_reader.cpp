@@ -290,7 +290,7 @@ void CheckSurface(const TomlFieldReader& r, const Scene& scene) {
   }
   if (type == AnalysisType::kRelease) {
     r.Require(contact, "effects.stiction",
-              "analysis.type = \"release\" lets the beam go from the substrate: declare "
+              "analysis.type = \"release\" lets the structure go from the substrate: declare "
               "[effects.stiction] (or [effects.contact])");
   }
   if (!e.HasSurfaceEffect()) return;
@@ -408,24 +408,16 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
   }
 }
 
-// A device (a frame, or a parametric device's netlist) runs the static, modal, buckling,
-// transient, pull-in and haptic analyses, linear or with its members' stretching; of the effects
-// through the substrate it takes the electrodes, the Casimir and van der Waals pressures, the
-// gas film (CheckSurface says where each acts) and the contact (in transients and haptics);
-// stiction acts on a cantilever or a bridge. Its netlist must be sound, and its loads and recorded
-// points must name its nodes and bodies.
+// A device (a frame, or a parametric device's netlist) runs every analysis, linear or with its
+// members' stretching; of the effects through the substrate it takes the electrodes, the Casimir
+// and van der Waals pressures, the gas film (CheckSurface says where each acts), and the contact
+// and stiction in transients, releases and haptics. Its netlist must be sound, and its loads and
+// recorded points must name its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
       std::string("structure.kind = \"") + ToString(scene.structure.kind) + "\"";
   const AnalysisType type = scene.analysis.type;
-  r.Require(type == AnalysisType::kStatic || type == AnalysisType::kModal ||
-                type == AnalysisType::kBuckling || type == AnalysisType::kTransient ||
-                type == AnalysisType::kPullin || type == AnalysisType::kHaptic,
-            "analysis.type",
-            kind +
-                " runs the \"static\", \"modal\", \"buckling\", \"transient\", \"pullin\" "
-                "and \"haptic\" analyses");
   r.Require(type != AnalysisType::kBuckling || !scene.loads.points.empty() ||
                 !scene.loads.distributed.isZero(0.0),
             "analysis.type",
@@ -438,13 +430,17 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                 "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
   const SceneEffects& e = scene.effects;
-  r.Require(!IsOn(e.stiction), "effects.stiction",
-            "acts on a cantilever or a bridge, not on " + kind +
-                " (a device takes [effects.contact], [effects.electrostatic], [[effects.combs]], "
-                "[effects.casimir], [effects.van_der_waals] and [effects.squeeze_film])");
-  r.Require(!IsOn(e.contact) || type == AnalysisType::kTransient || type == AnalysisType::kHaptic,
-            "effects.contact",
-            "on " + kind + " it acts in the \"transient\" and \"haptic\" analyses");
+  r.Require(!e.HasContact() || type == AnalysisType::kTransient || type == AnalysisType::kHaptic ||
+                type == AnalysisType::kRelease,
+            IsOn(e.contact) ? "effects.contact" : "effects.stiction",
+            "on " + kind + " it acts in the \"transient\", \"release\" and \"haptic\" analyses");
+  // Measured: the stuck members' stiff constraints made the modal steps non-finite.
+  r.Require(!IsOn(e.stiction) || type == AnalysisType::kRelease ||
+                scene.analysis.integrator != Integrator::kModal,
+            "effects.stiction",
+            "on " + kind +
+                " it needs the full model's steps: analysis.integrator = \"modal\" takes no "
+                "adhesion on a device (use \"generalized-alpha\")");
   if (IsOn(e.electrostatic)) {
     r.Require(type != AnalysisType::kModal && type != AnalysisType::kBuckling,
               "effects.electrostatic",

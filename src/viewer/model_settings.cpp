@@ -58,10 +58,8 @@ std::vector<SceneOverride> ModelSettings::ToOverrides() const {
   if (substrate) out.push_back({"structure.gap", TomlFloat(gap_m)});
   // Every effect's table with its parameters, on or off, so the loader checks them either way.
   out.push_back({"effects.contact.enabled", flag(contact)});
-  if (!device) {
-    out.push_back({"effects.stiction.enabled", flag(stiction)});
-    out.push_back({"effects.stiction.adhesion_energy", TomlFloat(adhesion_energy_j_m2)});
-  }
+  out.push_back({"effects.stiction.enabled", flag(stiction)});
+  out.push_back({"effects.stiction.adhesion_energy", TomlFloat(adhesion_energy_j_m2)});
   out.push_back({"effects.electrostatic.enabled", flag(electrostatic)});
   out.push_back({"effects.electrostatic.voltage", TomlFloat(voltage_v)});
   out.push_back({"effects.casimir.enabled", flag(casimir)});

@@ -38,7 +38,7 @@ struct ModelSettings {
   /// The settings of a loaded scene (parameters it leaves out keep the defaults above).
   static ModelSettings FromScene(const Scene& scene, const HapticPhysicsOptions& physics);
   /// Every setting but the physics as a `--set` override, table by table: a device's without the
-  /// beam's sizes and stiction (which it does not read).
+  /// beam's sizes (which it does not read).
   std::vector<SceneOverride> ToOverrides() const;
 };
 

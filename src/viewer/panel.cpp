@@ -178,14 +178,8 @@ bool Panel::DrawModel() {
 
 bool Panel::DrawEffects() {
   bool done = ImGui::Checkbox("contact", &draft_.contact);
-  if (IsDevice(draft_.kind)) {
-    ImGui::TextDisabled("stiction: on beams");
-  } else {
-    done |= ImGui::Checkbox("stiction", &draft_.stiction);
-    if (draft_.stiction) {
-      done |= EditScaled("Gamma [J/m2]", draft_.adhesion_energy_j_m2, 1.0, "%.4f");
-    }
-  }
+  done |= ImGui::Checkbox("stiction", &draft_.stiction);
+  if (draft_.stiction) done |= EditScaled("Gamma [J/m2]", draft_.adhesion_energy_j_m2, 1.0, "%.4f");
   done |= ImGui::Checkbox("electrostatic", &draft_.electrostatic);
   if (draft_.electrostatic) done |= EditScaled("voltage [V]", draft_.voltage_v, 1.0, "%.3f");
   done |= ImGui::Checkbox("Casimir", &draft_.casimir);

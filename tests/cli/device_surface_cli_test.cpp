@@ -111,15 +111,71 @@ TEST(DeviceSurfaceCliTest, TheContactCatchesThePlatePulledIn) {
   EXPECT_EQ(caught["contact_events"]["contacts"], 1);
 }
 
+// cantilever-stiction's beam as a member of a frame, released from the substrate: stuck in the S
+// shape with the beam's free span and length on the substrate (the same elements and crack front:
+// equal to round-off); the device's own lengths are null, and nodes.csv holds the tip lying down.
+TEST(DeviceSurfaceCliTest, ACantileverMemberReleasesAsTheCantilever) {
+  const testing::TempDirectory dir("frame_release");
+  testing::WriteFile(dir.path() / "member.toml", R"(
+[structure]
+kind = "frame"
+thickness = 2e-6
+gap = 2e-6
+[[structure.nodes]]
+name = "clamp"
+position = [0.0, 0.0, 0.0]
+support = "clamped"
+[[structure.nodes]]
+name = "tip"
+position = [200e-6, 0.0, 0.0]
+[[structure.beams]]
+nodes = ["clamp", "tip"]
+width = 20e-6
+[material]
+young_modulus = 169e9
+density = 2330.0
+[model]
+dimension = 3
+elements = 100
+[effects]
+stiction = { adhesion_energy = 0.02 }
+[analysis]
+type = "release"
+)");
+  const nlohmann::json beam = RunJson({"cantilever-stiction"});
+  const nlohmann::json device =
+      RunJson({(dir.path() / "member.toml").string(), "--out", (dir.path() / "out").string()});
+  ASSERT_EQ(device["status"], "ok");
+  EXPECT_TRUE(device["stuck"].get<bool>());
+  EXPECT_EQ(device["shape"], "s");
+  EXPECT_TRUE(device["detached_length_m"].is_null());
+  const nlohmann::json& member = device["members"][0];
+  EXPECT_EQ(member["nodes"], nlohmann::json({"clamp", "tip"}));
+  EXPECT_EQ(member["shape"], beam["shape"]);
+  const double span = beam["detached_length_m"].get<double>();
+  EXPECT_NEAR(member["detached_length_m"].get<double>(), span, 1e-12 * span);
+  EXPECT_NEAR(member["contact_length_m"].get<double>(), beam["contact_length_m"].get<double>(),
+              1e-12 * span);
+  EXPECT_NEAR(device["nodes"]["tip"]["displacement"][1].get<double>(), -2e-6, 1e-4 * 2e-6);
+  const std::vector<std::string> rows = testing::ReadLines(dir.path() / "out" / "nodes.csv");
+  ASSERT_EQ(rows.size(), 3U);
+  ExpectContains(rows[2], "tip,");
+}
+
 TEST(DeviceSurfaceCliTest, SurfaceForcesWhereTheyCannotActAreRefused) {
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"static\"",
                                "--set", "effects.contact.enabled=true"}),
                  "effects.contact");
-  ExpectContains(
-      InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"transient\"", "--set",
-                    "analysis.duration=1e-5", "--set", "analysis.time_step=1e-7", "--set",
-                    "effects.stiction.adhesion_energy=0.02"}),
-      "effects.stiction");
+  ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"static\"",
+                               "--set", "effects.stiction.adhesion_energy=0.02"}),
+                 "effects.stiction = { adhesion_energy = 0.02 }: on structure.kind = "
+                 "\"serpentine\" it acts in the \"transient\", \"release\" and \"haptic\" "
+                 "analyses");
+  ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"haptic\"",
+                               "--set", "analysis.integrator=\"modal\"", "--set", "model.modes=4",
+                               "--set", "effects.damping.quality_factor=100.0", "--set",
+                               "effects.stiction.adhesion_energy=0.02"}),
+                 "analysis.integrator = \"modal\" takes no adhesion on a device");
   ExpectContains(
       InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"transient\"", "--set",
                     "analysis.duration=1e-5", "--set", "analysis.time_step=1e-7", "--set",

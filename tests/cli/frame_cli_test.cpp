@@ -130,8 +130,8 @@ TEST(FrameCliTest, NetlistErrorsNameTheEntryAndTheKey) {
   ExpectContains(error(Plate("\n[[loads.points]]\nnode = \"c1\"\nbody = \"plate\"\n")),
                  "loads.points[1]");
   ExpectContains(error(Plate(), {"--set", "analysis.type=\"release\""}),
-                 "analysis.type = \"release\": structure.kind = \"frame\" runs the \"static\", "
-                 "\"modal\", \"buckling\", \"transient\", \"pullin\" and \"haptic\" analyses");
+                 "effects.stiction: analysis.type = \"release\" lets the structure go from the "
+                 "substrate");
   ExpectContains(error(Plate(), {"--set", "structure.length=1e-4"}),
                  "structure.length = 1e-04: only a cantilever or a bridge takes it");
   ExpectContains(error(Plate("\n[loads]\ntip_force = [0.0, 1e-6, 0.0]\n")), "loads.tip_force");

@@ -208,8 +208,8 @@ TEST(CombMeshTest, TheFingersInterleaveOverTheOverlap) {
   EXPECT_NEAR(reach(moved, 0, true) - reach(moving, 0, true), 1e-6, 1e-10);
 }
 
-// A parametric device's design keys are edited and read back through the loader; the beam's
-// sizes and stiction, which a device refuses, are not written.
+// A parametric device's design keys and its contact and stiction are edited and read back through
+// the loader; the beam's sizes, which a device refuses, are not written.
 TEST(ModelSettingsTest, ADevicesDesignKeysReadBackThroughTheLoader) {
   const std::vector<SceneOverride> haptic = {{"analysis.type", "\"haptic\""}};
   const Scene scene = LoadScene("serpentine-pullin", haptic);
@@ -221,6 +221,8 @@ TEST(ModelSettingsTest, ADevicesDesignKeysReadBackThroughTheLoader) {
     if (p.key == "span_length") p.value = 60e-6;
   }
   settings.contact = true;
+  settings.stiction = true;
+  settings.adhesion_energy_j_m2 = 1e-3;
   std::vector<SceneOverride> overrides = haptic;
   for (const SceneOverride& o : settings.ToOverrides()) overrides.push_back(o);
   const Scene edited = LoadScene("serpentine-pullin", overrides);
@@ -229,7 +231,8 @@ TEST(ModelSettingsTest, ADevicesDesignKeysReadBackThroughTheLoader) {
   EXPECT_EQ(edited.structure.serpentine.plate_width, scene.structure.serpentine.plate_width);
   EXPECT_EQ(edited.structure.gap, scene.structure.gap);
   EXPECT_TRUE(IsOn(edited.effects.contact));
-  EXPECT_FALSE(edited.effects.stiction.has_value());
+  ASSERT_TRUE(IsOn(edited.effects.stiction));
+  EXPECT_EQ(*edited.effects.stiction->adhesion_energy, 1e-3);
   EXPECT_EQ(ModelSettings::FromScene(edited, HapticPhysicsOptions{}).ToOverrides().size(),
             settings.ToOverrides().size());
 }

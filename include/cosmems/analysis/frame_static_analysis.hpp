@@ -131,6 +131,19 @@ inline Status SolveFrameDisplacement(const FrameModel& model, const Eigen::Vecto
 
 namespace internal {
 
+// The motions (SI) of every node and body of the displacement out.displacement.
+inline void RecoverFrameMotions(const FrameModel& model, FrameStaticSolution& out) {
+  const Eigen::VectorXd& d = out.displacement;
+  auto si = [&](FrameModel::Motion m) {
+    m.head<3>() *= model.units().length;
+    return m;
+  };
+  for (std::size_t n = 0; n < model.description().nodes.size(); ++n) {
+    out.nodes.push_back(si(model.NodeMotion(d, static_cast<int>(n))));
+  }
+  for (int c : model.mesh().body_carrier) out.bodies.push_back(si(model.CarrierMotion(d, c)));
+}
+
 // The motions of every node and body, the largest deflection toward the substrate, the members'
 // largest stress and axial force and the reactions of the solved displacement out.displacement
 // (with the nonlinear forces' shares of the end forces).
@@ -139,15 +152,8 @@ inline void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loa
                                FrameStaticSolution& out) {
   const UnitSystem& units = model.units();
   const Eigen::VectorXd& d = out.displacement;
-  auto si = [&](FrameModel::Motion m) {
-    m.head<3>() *= units.length;
-    return m;
-  };
   const StructureDescription& s = model.description();
-  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
-    out.nodes.push_back(si(model.NodeMotion(d, static_cast<int>(n))));
-  }
-  for (int c : model.mesh().body_carrier) out.bodies.push_back(si(model.CarrierMotion(d, c)));
+  RecoverFrameMotions(model, out);
 
   // Toward the substrate: every mesh node, and every corner of every body.
   for (int n = 0; n < static_cast<int>(model.mesh().nodes.size()); ++n) {

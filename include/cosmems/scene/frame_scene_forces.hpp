@@ -38,7 +38,7 @@ class FrameSceneForces {
     if (IsOn(e.squeeze_film)) {
       all_.Add(film_.emplace(model, MakeSqueezeFilmOptions(scene), substrate.gap));
     }
-    if (IsOn(e.contact)) all_.Add(contact_.emplace(model, MakeContactOptions(scene)));
+    if (e.HasContact()) all_.Add(contact_.emplace(model, MakeContactOptions(scene)));
   }
   FrameSceneForces(const FrameSceneForces&) = delete;
   FrameSceneForces& operator=(const FrameSceneForces&) = delete;

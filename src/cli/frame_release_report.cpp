@@ -1,0 +1,122 @@
+#include "frame_release_report.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+#include "contact_report.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
+#include "cosmems/analysis/nonlinear_static_analysis.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
+#include "frame_solution_output.hpp"
+#include "json_vector.hpp"
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+
+std::unique_ptr<FrameReleaseReport> FrameReleaseReport::Run(const Scene& scene) {
+  RunHeader header = RunHeader::Start(scene);
+  const auto start = std::chrono::steady_clock::now();
+  StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  const FrameLoadCase loads = MakeFrameLoadCase(scene, structure);
+  FrameSceneForces scene_forces(model, scene);
+  FrameSubstrateContact& contact = *scene_forces.contact();
+  ForceSum forces;  // the statics' forces: the film, a velocity's, has no share
+  for (FrameElementForce* force : scene_forces.elements()) forces.Add(*force);
+  forces.Add(contact);
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
+  if (IsOn(scene.effects.electrostatic)) {
+    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
+                                                      *scene.effects.electrostatic->voltage));
+  }
+  contact.StickAll();
+  NonlinearStaticOptions options;
+  options.start = contact.PressedDisplacement();
+  // One node or plate lets go per settle: room for every one of them, and the multipliers'.
+  options.newton.max_settles =
+      std::max(options.newton.max_settles, 4 * static_cast<int>(contact.points().points().size()));
+  NonlinearStaticSolve solve(model.Stiffness(), forces, options,
+                             electrostatic ? &*electrostatic : nullptr);
+  const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
+  header.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  header.status = solution.status;
+  header.dofs = model.FreeDofCount();
+  header.model.elements = model.ElementCount();
+
+  FrameReleaseResults results;
+  if (solution.status == Status::kOk) {
+    results.contact = contact.Summary();
+    for (std::size_t m = 0; m < structure.members.size(); ++m) {
+      results.members.push_back(contact.MemberSummary(static_cast<int>(m)));
+    }
+    for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
+      results.bodies_stuck.push_back(contact.BodyStuck(static_cast<int>(b)));
+    }
+    FrameStaticSolution motions;
+    motions.displacement = solution.displacement;
+    RecoverFrameMotions(model, motions);
+    results.nodes = std::move(motions.nodes);
+    results.bodies = std::move(motions.bodies);
+  }
+  return std::make_unique<FrameReleaseReport>(std::move(header), std::move(structure),
+                                              std::move(results));
+}
+
+void FrameReleaseReport::AddResults(nlohmann::ordered_json& json) const {
+  const ContactSummary& c = results_.contact;
+  json["stuck"] = c.Stuck();
+  json["shape"] = ToString(c.shape);
+  json["detached_length_m"] = nullptr;
+  json["contact_length_m"] = nullptr;
+  json["contact"] = ContactJson(c, false);
+  nlohmann::ordered_json members = nlohmann::ordered_json::array();
+  for (std::size_t m = 0; m < results_.members.size(); ++m) {
+    const ContactSummary& member = results_.members[m];
+    const StructureMember& s = structure_.members[m];
+    members.push_back({{"nodes", {structure_.nodes[s.from].name, structure_.nodes[s.to].name}},
+                       {"stuck", member.Stuck()},
+                       {"shape", ToString(member.shape)},
+                       {"detached_length_m", member.detached_length_m},
+                       {"contact_length_m", member.contact_length_m}});
+  }
+  json["members"] = members;
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
+  for (std::size_t n = 0; n < results_.nodes.size(); ++n) {
+    nodes[structure_.nodes[n].name] = MotionJson(results_.nodes[n]);
+  }
+  json["nodes"] = nodes;
+  nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
+  for (std::size_t b = 0; b < results_.bodies.size(); ++b) {
+    nlohmann::ordered_json body = MotionJson(results_.bodies[b]);
+    body["stuck"] = static_cast<bool>(results_.bodies_stuck[b]);
+    bodies[structure_.bodies[b].name] = body;
+  }
+  json["bodies"] = bodies;
+}
+
+void FrameReleaseReport::PrintResults(std::ostream& out) const {
+  out << "after release         " << Describe(results_.contact.shape) << "\n";
+  PrintContact(out, results_.contact, false);
+  for (std::size_t m = 0; m < results_.members.size(); ++m) {
+    const ContactSummary& member = results_.members[m];
+    if (!member.InContact()) continue;
+    const StructureMember& s = structure_.members[m];
+    out << "member " << structure_.nodes[s.from].name << "-" << structure_.nodes[s.to].name << "  "
+        << Describe(member.shape) << ", detached " << Scientific(member.detached_length_m)
+        << " m, on the substrate " << Scientific(member.contact_length_m) << " m\n";
+  }
+  for (std::size_t b = 0; b < results_.bodies_stuck.size(); ++b) {
+    out << "body " << structure_.bodies[b].name << "  "
+        << (results_.bodies_stuck[b] ? "stuck" : "free") << "\n";
+  }
+}
+
+void FrameReleaseReport::WriteFiles(const std::filesystem::path& directory) const {
+  WriteFrameMotions(structure_, results_.nodes, results_.bodies, directory);
+}
+
+}  // namespace cosmems::internal
