@@ -4,7 +4,6 @@
 #include <chrono>
 #include <optional>
 
-#include "contact_report.hpp"
 #include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
@@ -49,13 +48,7 @@ std::unique_ptr<FrameReleaseReport> FrameReleaseReport::Run(const Scene& scene) 
 
   FrameReleaseResults results;
   if (solution.status == Status::kOk) {
-    results.contact = contact.Summary();
-    for (std::size_t m = 0; m < structure.members.size(); ++m) {
-      results.members.push_back(contact.MemberSummary(static_cast<int>(m)));
-    }
-    for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
-      results.bodies_stuck.push_back(contact.BodyStuck(static_cast<int>(b)));
-    }
+    results.contact = FrameContactResults::Of(contact, structure);
     FrameStaticSolution motions;
     motions.displacement = solution.displacement;
     RecoverFrameMotions(model, motions);
@@ -67,23 +60,11 @@ std::unique_ptr<FrameReleaseReport> FrameReleaseReport::Run(const Scene& scene) 
 }
 
 void FrameReleaseReport::AddResults(nlohmann::ordered_json& json) const {
-  const ContactSummary& c = results_.contact;
+  const ContactSummary& c = results_.contact.contact;
   json["stuck"] = c.Stuck();
   json["shape"] = ToString(c.shape);
   json["detached_length_m"] = nullptr;
   json["contact_length_m"] = nullptr;
-  json["contact"] = ContactJson(c, false);
-  nlohmann::ordered_json members = nlohmann::ordered_json::array();
-  for (std::size_t m = 0; m < results_.members.size(); ++m) {
-    const ContactSummary& member = results_.members[m];
-    const StructureMember& s = structure_.members[m];
-    members.push_back({{"nodes", {structure_.nodes[s.from].name, structure_.nodes[s.to].name}},
-                       {"stuck", member.Stuck()},
-                       {"shape", ToString(member.shape)},
-                       {"detached_length_m", member.detached_length_m},
-                       {"contact_length_m", member.contact_length_m}});
-  }
-  json["members"] = members;
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (std::size_t n = 0; n < results_.nodes.size(); ++n) {
     nodes[structure_.nodes[n].name] = MotionJson(results_.nodes[n]);
@@ -91,28 +72,15 @@ void FrameReleaseReport::AddResults(nlohmann::ordered_json& json) const {
   json["nodes"] = nodes;
   nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
   for (std::size_t b = 0; b < results_.bodies.size(); ++b) {
-    nlohmann::ordered_json body = MotionJson(results_.bodies[b]);
-    body["stuck"] = static_cast<bool>(results_.bodies_stuck[b]);
-    bodies[structure_.bodies[b].name] = body;
+    bodies[structure_.bodies[b].name] = MotionJson(results_.bodies[b]);
   }
   json["bodies"] = bodies;
+  if (results_.contact.declared) AddFrameContact(structure_, results_.contact, json);
 }
 
 void FrameReleaseReport::PrintResults(std::ostream& out) const {
-  out << "after release         " << Describe(results_.contact.shape) << "\n";
-  PrintContact(out, results_.contact, false);
-  for (std::size_t m = 0; m < results_.members.size(); ++m) {
-    const ContactSummary& member = results_.members[m];
-    if (!member.InContact()) continue;
-    const StructureMember& s = structure_.members[m];
-    out << "member " << structure_.nodes[s.from].name << "-" << structure_.nodes[s.to].name << "  "
-        << Describe(member.shape) << ", detached " << Scientific(member.detached_length_m)
-        << " m, on the substrate " << Scientific(member.contact_length_m) << " m\n";
-  }
-  for (std::size_t b = 0; b < results_.bodies_stuck.size(); ++b) {
-    out << "body " << structure_.bodies[b].name << "  "
-        << (results_.bodies_stuck[b] ? "stuck" : "free") << "\n";
-  }
+  out << "after release         " << Describe(results_.contact.contact.shape) << "\n";
+  if (results_.contact.declared) PrintFrameContact(structure_, results_.contact, out);
 }
 
 void FrameReleaseReport::WriteFiles(const std::filesystem::path& directory) const {

@@ -7,15 +7,13 @@
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/structure/structure_description.hpp"
-#include "cosmems/surface/contact_state.hpp"
+#include "frame_contact_output.hpp"
 
 namespace cosmems::internal {
 
 /// What a device's release reports, in SI (doc/cli.md, release, devices).
 struct FrameReleaseResults {
-  ContactSummary contact;                  ///< the device's: its state and stuck shape
-  std::vector<ContactSummary> members;     ///< each member's, as a beam's
-  std::vector<bool> bodies_stuck;          ///< whether each body's plate stayed stuck
+  FrameContactResults contact;             ///< the device's, each member's and each body's
   std::vector<FrameModel::Motion> nodes;   ///< (u [m], theta [rad]) of every node
   std::vector<FrameModel::Motion> bodies;  ///< of every body's centre
 };

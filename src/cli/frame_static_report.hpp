@@ -9,24 +9,29 @@
 #include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "frame_contact_output.hpp"
 
 namespace cosmems::internal {
 
 /// A frame's statics: every node's and body's motion, the reactions at the anchors and the
-/// members' largest deflection, stress and axial force; the capacitance of its electrodes, and
-/// its comb drives' forces, engagements, capacitances and side-instability voltages (doc/cli.md,
+/// members' largest deflection, stress and axial force; the capacitance of its electrodes, its
+/// comb drives' forces, engagements, capacitances and side-instability voltages, and with contact
+/// its state on the substrate, whether its surface forces collapsed it onto it (doc/cli.md,
 /// static, frames).
 class FrameStaticReport final : public AnalysisReport {
  public:
   FrameStaticReport(RunHeader header, StructureDescription structure, FrameStaticSolution solution,
                     std::vector<CombDrive> combs, std::vector<CombDriveState> comb_states,
-                    std::optional<double> electrostatic_capacitance_f)
+                    std::optional<double> electrostatic_capacitance_f, bool collapsed,
+                    FrameContactResults contact)
       : AnalysisReport(std::move(header)),
         structure_(std::move(structure)),
         solution_(std::move(solution)),
         combs_(std::move(combs)),
         comb_states_(std::move(comb_states)),
-        electrostatic_capacitance_f_(electrostatic_capacitance_f) {}
+        electrostatic_capacitance_f_(electrostatic_capacitance_f),
+        collapsed_(collapsed),
+        contact_(std::move(contact)) {}
 
   static std::unique_ptr<FrameStaticReport> Run(const Scene& scene);
 
@@ -47,6 +52,10 @@ class FrameStaticReport final : public AnalysisReport {
   std::vector<CombDriveState> comb_states_;  ///< one per comb when the solve succeeded
   /// F: the faces over the electrodes, in the solved state (with [effects.electrostatic]).
   std::optional<double> electrostatic_capacitance_f_;
+  /// The surface forces folded before their full value: the device lies on the substrate (with
+  /// contact) or has no equilibrium.
+  bool collapsed_;
+  FrameContactResults contact_;  ///< with contact or stiction, when the solve succeeded
 };
 
 }  // namespace cosmems::internal

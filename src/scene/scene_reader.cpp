@@ -409,10 +409,9 @@ void CheckNetlist(const TomlFieldReader& r, const Scene& scene) {
 }
 
 // A device (a frame, or a parametric device's netlist) runs every analysis, linear or with its
-// members' stretching; of the effects through the substrate it takes the electrodes, the Casimir
-// and van der Waals pressures, the gas film (CheckSurface says where each acts), and the contact
-// and stiction in transients, releases and haptics. Its netlist must be sound, and its loads and
-// recorded points must name its nodes and bodies.
+// members' stretching, and every effect through the substrate where CheckSurface lets it act
+// (stiction off the modal time path). Its netlist must be sound, and its loads and recorded
+// points must name its nodes and bodies.
 void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   if (!IsDevice(scene.structure.kind)) return;
   const std::string kind =
@@ -430,10 +429,6 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
                 "single-member theory)");
   r.Require(scene.model.dimension == 3, "model.dimension", kind + " is a 3-D model");
   const SceneEffects& e = scene.effects;
-  r.Require(!e.HasContact() || type == AnalysisType::kTransient || type == AnalysisType::kHaptic ||
-                type == AnalysisType::kRelease,
-            IsOn(e.contact) ? "effects.contact" : "effects.stiction",
-            "on " + kind + " it acts in the \"transient\", \"release\" and \"haptic\" analyses");
   // Measured: the stuck members' stiff constraints made the modal steps non-finite.
   r.Require(!IsOn(e.stiction) || type == AnalysisType::kRelease ||
                 scene.analysis.integrator != Integrator::kModal,

@@ -80,6 +80,26 @@ TEST(DeviceSurfaceCliTest, CasimirHoldsOrPullsInTheSerpentinePlate) {
   ExpectContains(collapsed["warnings"].dump(), "the surface forces pull the device onto");
 }
 
+// Statics at 20 V, past the plate's pull-in voltage (13.1 V): with no floor there is no
+// equilibrium (exit 3); with the contact the collapsed plate lies on the contact plane, the
+// separation (0.2 um) above the substrate, within the tolerance (1e-4 of the gap), touching but
+// not stuck, its springs clear of the substrate.
+TEST(DeviceSurfaceCliTest, TheContactHoldsThePlatePulledInAtRest) {
+  std::vector<std::string> pulled = {"serpentine-pullin", "--set", "analysis.type=\"static\"",
+                                     "--set", "effects.electrostatic.voltage=20.0"};
+  EXPECT_EQ(RunJson(pulled, 3)["status"], "not converged");
+  pulled.insert(pulled.end(), {"--set", "effects.contact.separation=0.2e-6"});
+  const nlohmann::json lying = RunJson(pulled);
+  ASSERT_EQ(lying["status"], "ok");
+  EXPECT_TRUE(lying["collapsed"].get<bool>());
+  EXPECT_EQ(lying["contact"]["state"], "contact");
+  EXPECT_NEAR(lying["bodies"]["plate"]["displacement"][1].get<double>(), -1.8e-6, 1e-4 * 2e-6);
+  EXPECT_FALSE(lying["bodies"]["plate"]["stuck"].get<bool>());
+  for (const nlohmann::json& member : lying["members"]) {
+    EXPECT_EQ(member["contact_length_m"].get<double>(), 0.0) << member;
+  }
+}
+
 // A 20 V step, past the plate's pull-in voltage (13.1 V), snaps it down: with no floor the step
 // that would cross the gap fails (exit 3, its matrix indefinite); with the contact the
 // plate lands on the contact plane, the separation (0.2 um) above the substrate, and lies there
@@ -162,15 +182,66 @@ type = "release"
   ExpectContains(rows[2], "tip,");
 }
 
+// The cantilever's static pressed onto the substrate by a tip force 3.5 times what closes the gap,
+// with stiction, as a frame member and as the beam (the same 20 Hermite elements): both tips lie
+// on the contact plane within its tolerance (1e-4 of the gap), stuck, and the clamp's stress,
+// (F - R) L c / I with R the substrate's push, is the same to 1e-6 (the tips' places differ
+// within the tolerance, and with them R).
+TEST(DeviceSurfaceCliTest, ACantileverMemberPressedOntoTheSubstrateIsTheCantilever) {
+  const testing::TempDirectory dir("frame_static_contact");
+  testing::WriteFile(dir.path() / "member.toml", R"(
+[structure]
+kind = "frame"
+thickness = 2e-6
+gap = 2e-6
+[[structure.nodes]]
+name = "clamp"
+position = [0.0, 0.0, 0.0]
+support = "clamped"
+[[structure.nodes]]
+name = "tip"
+position = [200e-6, 0.0, 0.0]
+[[structure.beams]]
+nodes = ["clamp", "tip"]
+width = 20e-6
+[material]
+young_modulus = 169e9
+density = 2330.0
+[model]
+dimension = 3
+elements = 20
+[[loads.points]]
+node = "tip"
+force = [0.0, -6e-6, 0.0]
+[effects]
+stiction = { adhesion_energy = 0.02 }
+[analysis]
+type = "static"
+)");
+  const nlohmann::json beam = RunJson({"cantilever", "--set", "loads.tip_force=[0.0, -6e-6, 0.0]",
+                                       "--set", "effects.stiction.adhesion_energy=0.02"});
+  const nlohmann::json device = RunJson({(dir.path() / "member.toml").string()});
+  ASSERT_EQ(beam["status"], "ok");
+  ASSERT_EQ(device["status"], "ok");
+  EXPECT_FALSE(device["collapsed"].get<bool>());
+  EXPECT_EQ(device["contact"]["state"], beam["contact"]["state"]);
+  EXPECT_EQ(device["members"][0]["stuck"], true);
+  const double tolerance = 1e-4 * 2e-6;
+  EXPECT_NEAR(device["nodes"]["tip"]["displacement"][1].get<double>(), -2e-6, tolerance);
+  EXPECT_NEAR(beam["tip_displacement"][1].get<double>(), -2e-6, tolerance);
+  const double stress = beam["max_stress_pa"].get<double>();
+  EXPECT_NEAR(device["max_stress_pa"].get<double>(), stress, 1e-6 * stress);
+}
+
 TEST(DeviceSurfaceCliTest, SurfaceForcesWhereTheyCannotActAreRefused) {
-  ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"static\"",
-                               "--set", "effects.contact.enabled=true"}),
-                 "effects.contact");
-  ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"static\"",
-                               "--set", "effects.stiction.adhesion_energy=0.02"}),
-                 "effects.stiction = { adhesion_energy = 0.02 }: on structure.kind = "
-                 "\"serpentine\" it acts in the \"transient\", \"release\" and \"haptic\" "
-                 "analyses");
+  ExpectContains(
+      InvalidInput({"run", "serpentine-pullin", "--set", "effects.contact.enabled=true"}),
+      "effects.contact");
+  ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"modal\"",
+                               "--set", "effects.electrostatic.enabled=false", "--set",
+                               "effects.stiction.adhesion_energy=0.02"}),
+                 "effects.stiction = { adhesion_energy = 0.02 }: not available for "
+                 "analysis.type = \"modal\"");
   ExpectContains(InvalidInput({"run", "serpentine-pullin", "--set", "analysis.type=\"haptic\"",
                                "--set", "analysis.integrator=\"modal\"", "--set", "model.modes=4",
                                "--set", "effects.damping.quality_factor=100.0", "--set",

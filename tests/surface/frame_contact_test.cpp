@@ -7,9 +7,11 @@
 #include <cmath>
 #include <random>
 
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/surface/frame_substrate_contact.hpp"
 #include "force_differences.hpp"
+#include "structure/test_frames.hpp"
 #include "surface/plate_on_four_beams.hpp"
 
 namespace cosmems {
@@ -126,6 +128,62 @@ TEST(FrameSubstrateContactTest, TheImpactStopsTheApproachWithoutAddingEnergy) {
     }
   }
   EXPECT_GE(held, 4);  // the plate's corners at least
+}
+
+// A member's points give their elements their reactions (LocalForce): carried to the global
+// axes and scattered to each element's unknowns, the shares are the contact's force, point by
+// point the same products summed in another order (round-off apart). A bridge of four elements
+// pressed 1.5 gaps down at its middle, its inner points through the plane.
+TEST(FrameSubstrateContactTest, TheElementsSharesAddUpToTheContactsForce) {
+  StructureDescription s;
+  const int left = test::AddNode(s, "left", Eigen::Vector3d::Zero(), Support::kClamped);
+  const int right = test::AddNode(s, "right", Eigen::Vector3d(200e-6, 0.0, 0.0), Support::kClamped);
+  test::AddBeam(s, left, right, 4);
+  const FrameModel model(s);
+  FrameSubstrateContact contact(model, Substrate());
+  // The bridge's first mode's shape, scaled: its middle 1.5 gaps down.
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  for (int n = 0; n < static_cast<int>(model.mesh().nodes.size()); ++n) {
+    const double x = model.mesh().nodes[n].position.x() / 200e-6;
+    const double w = 1.5 * kGap * std::pow(std::sin(M_PI * x), 2) / model.units().length;
+    const int uy = model.CarrierDof(model.mesh().nodes[n].carrier, 1);
+    if (uy >= 0) d[uy] = -w;
+  }
+  ASSERT_GT(contact.Penetration(d), 0.4 * kGap);
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(model.FreeDofCount());
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  ASSERT_TRUE(contact.Evaluate(d, force, tangent));
+  Eigen::VectorXd shares = Eigen::VectorXd::Zero(model.FreeDofCount());
+  for (int e = 0; e < model.ElementCount(); ++e) {
+    const FrameModel::ElementVector global =
+        model.ElementTransform(e).transpose() * contact.LocalForce(d, e);
+    for (int a = 0; a < 12; ++a) {
+      if (model.ElementDofs(e)[a] >= 0) shares[model.ElementDofs(e)[a]] += global[a];
+    }
+  }
+  ASSERT_GT(force.norm(), 0.0);
+  EXPECT_LE((shares - force).norm(), 1e-12 * force.norm());
+}
+
+// A load three times what closes the gap presses the plate onto the substrate (the statics with
+// the contact as one of the frame's forces): the plate lies on the contact plane within the
+// tolerance, and its four springs carry k delta, the rest going into the substrate. The anchors'
+// reactions come from the members' end forces; the plate's place, and so the springs' force, is
+// known to the tolerance, 1e-4 of the gap.
+TEST(FrameSubstrateContactTest, APlateLoadedOntoTheSubstrateLiesOnItOnItsSprings) {
+  const test::PlateOnFourBeams plate;
+  const FrameModel model(plate.structure);
+  FrameSubstrateContact contact(model, Substrate());
+  FrameLoadCase loads;
+  loads.points.push_back(
+      {-1, 0, Eigen::Vector3d(0.0, -3.0 * plate.k * kGap, 0.0), Eigen::Vector3d::Zero()});
+  const FrameStaticSolution solution = SolveFrameNonlinearStatic(model, {&contact}, loads);
+  ASSERT_EQ(solution.status, Status::kOk);
+  EXPECT_NEAR(solution.bodies[0][1], -kGap, contact.tolerance());
+  EXPECT_EQ(contact.Summary().state, ContactState::kContact);
+  double carried = 0.0;
+  for (const FrameReaction& reaction : solution.reactions) carried += reaction.force.y();
+  EXPECT_NEAR(carried, plate.k * kGap, 1e-4 * plate.k * kGap);
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/structure/frame_element_force.hpp"
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/surface/contact_state.hpp"
 #include "cosmems/surface/frame_adhesion_sites.hpp"
@@ -61,9 +61,11 @@ namespace cosmems {
 /// released points with their springs removed (Woodbury, from the factor with them); four corners
 /// move in three ways, and the formula needs C only through p^T C p, which stays defined.
 ///
-/// Impacts are inelastic (ImpactProjection), as on the beam: stuck points are held too. Evaluate(),
-/// Settle(), Commit() and ProjectMotion() allocate nothing; the model must outlive the force.
-class FrameSubstrateContact final : public NonlinearForce {
+/// Impacts are inelastic (ImpactProjection), as on the beam: stuck points are held too. A member
+/// element's points give it their reactions as its share (LocalForce), so a device's statics on
+/// the substrate recover its reactions and stresses with them. Evaluate(), Settle(), Commit() and
+/// ProjectMotion() allocate nothing; the model must outlive the force.
+class FrameSubstrateContact final : public FrameElementForce {
  public:
   /// Takes the gap, separation, tolerance, proximity, penalty and stiction of `options` (the
   /// beam's meanings, with the structure's lowest face for the beam's); throws
@@ -141,7 +143,7 @@ class FrameSubstrateContact final : public NonlinearForce {
       const double g = Gap(k, d);
       if (!std::isfinite(g)) return false;
       const double p = Reaction(k, g);
-      if (!stuck_[k] && p <= 0.0) continue;
+      if (!stuck_[k] && p <= 0.0) continue;  // a stuck point holds both ways, at any p
       const DofWeights& point = points_.points()[k];
       for (int a = 0; a < point.count; ++a) {
         force[point.dof[a]] -= p * point.n[a];
@@ -153,6 +155,18 @@ class FrameSubstrateContact final : public NonlinearForce {
       }
     }
     return true;
+  }
+
+  /// The reactions of element e's points, on its lower face, in its axes (internal units).
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const override {
+    FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
+    for (int k = points_.first(e); k < points_.first(e + 1); ++k) {
+      const auto point = static_cast<std::size_t>(k);
+      if (!Holds(point)) continue;
+      const double p = Reaction(point, Gap(point, d));  // a free point's is never negative
+      out -= p * points_.points()[point].local;
+    }
+    return out;
   }
 
   // Idle: every point clear of the plane by more than the tolerance and not pushed; proven by one
