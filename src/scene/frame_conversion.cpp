@@ -112,6 +112,7 @@ FramePullInOptions MakeFramePullInOptions(const Scene& scene) {
   FramePullInOptions out;
   const ElectrostaticEffect& e = *scene.effects.electrostatic;
   out.electrodes.gap = *scene.structure.gap;
+  if (scene.effects.HasContact()) out.electrodes.separation = MakeContactOptions(scene).separation;
   if (!e.electrodes.empty()) {
     out.electrodes.electrodes.clear();
     for (const SceneElectrode& r : e.electrodes) out.electrodes.electrodes.push_back({r.x, r.z});

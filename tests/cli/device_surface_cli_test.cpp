@@ -78,6 +78,14 @@ TEST(DeviceSurfaceCliTest, CasimirHoldsOrPullsInTheSerpentinePlate) {
   const nlohmann::json collapsed = RunJson(closed, 3);
   EXPECT_EQ(collapsed["status"], "not converged");
   ExpectContains(collapsed["warnings"].dump(), "the surface forces pull the device onto");
+  // With the contact 20 nm above the substrate the collapsed plate lies on the contact plane, 30
+  // nm down, within the tolerance (1e-4 of the gap); the pressure is held at the plane's gap.
+  closed.insert(closed.end(), {"--set", "effects.contact.separation=2e-8"});
+  const nlohmann::json lying = RunJson(closed);
+  ASSERT_EQ(lying["status"], "ok");
+  EXPECT_TRUE(lying["collapsed"].get<bool>());
+  EXPECT_EQ(lying["contact"]["state"], "contact");
+  EXPECT_NEAR(lying["bodies"]["plate"]["displacement"][1].get<double>(), -3e-8, 1e-4 * 0.05e-6);
 }
 
 // Statics at 20 V, past the plate's pull-in voltage (13.1 V): with no floor there is no

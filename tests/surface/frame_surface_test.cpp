@@ -149,6 +149,39 @@ TEST(FrameSurfaceForceTest, CasimirAndVanDerWaalsHoldThePlateWhereItsSpringsBala
   }
 }
 
+// With the contact's separation the gap is held there from below, as on the beam: the plate
+// pushed a tenth of the gap through the contact plane meets Casimir's pressure at the plane,
+// p(s) A on its face, and no stiffness; without it the same state has closed no gap and takes
+// the pressure at its own, 1e-12 (round-off: every point of the flat plate at one gap).
+TEST(FrameSurfaceForceTest, TheSeparationHoldsTheGapUnderASurfacePressure) {
+  const test::PlateOnFourBeams device = ThickPlate();
+  const FrameModel model(device.structure);
+  FrameGapOptions under{kCasimirGap, {device.plate}};
+  under.separation = 0.1 * kCasimirGap;
+  FrameGapForce<CasimirPressure> held(model, CasimirPressure{}, under);
+  under.separation = 0.0;
+  FrameGapForce<CasimirPressure> free(model, CasimirPressure{}, under);
+  const int uy = model.CarrierDof(model.mesh().body_carrier[0], 1);
+  const auto pull = [&](FrameGapForce<CasimirPressure>& force, double down, double& slope) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+    d[uy] = -down / model.units().length;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(model.FreeDofCount());
+    ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+    EXPECT_TRUE(force.Evaluate(d, r, tangent));
+    slope = tangent.band()(uy, uy);
+    return r[uy] * model.units().force;
+  };
+  double slope = 0.0;
+  const double through = pull(held, 0.95 * kCasimirGap, slope);
+  const double at_plane = CasimirPressure{}.Value(0.1 * kCasimirGap) * device.area;
+  EXPECT_NEAR(through, at_plane, 1e-12 * at_plane);
+  EXPECT_EQ(slope, 0.0);
+  const double own = pull(free, 0.95 * kCasimirGap, slope);
+  const double at_own = CasimirPressure{}.Value(0.05 * kCasimirGap) * device.area;
+  EXPECT_NEAR(own, at_own, 1e-12 * at_own);
+  EXPECT_LT(slope, 0.0);
+}
+
 // With Casimir beside it the electrode pulls the plate in sooner: the fold of
 // V^2(x) = 2 (g - x)^2 (k x - p_C(g - x) A) / (eps0 A), maximised here by golden sections.
 // The fold search leaves the voltage within ~1e-7 (frame_pullin_test.cpp); 1e-6 asserted.

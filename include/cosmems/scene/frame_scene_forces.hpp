@@ -26,7 +26,8 @@ class FrameSceneForces {
   FrameSceneForces(const FrameModel& model, const Scene& scene) {
     const SceneEffects& e = scene.effects;
     if (scene.model.theory == Theory::kStretching) elements_.push_back(&stretching_.emplace(model));
-    const FrameGapOptions substrate{scene.structure.gap.value_or(0.0)};
+    FrameGapOptions substrate{scene.structure.gap.value_or(0.0)};
+    if (e.HasContact()) substrate.separation = MakeContactOptions(scene).separation;
     if (IsOn(e.casimir)) {
       elements_.push_back(&casimir_.emplace(model, CasimirPressure{}, substrate));
     }

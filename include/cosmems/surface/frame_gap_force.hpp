@@ -45,7 +45,7 @@ class FrameGapForce final : public FrameElementForce {
       const Pressure pressure = AtFaceWidth(pressure_, point.width_m);
       const double area = scale_ * point.area_m2;
       const double p = pressure.Value(gap) * area / force_n_;
-      const double dp = pressure.Slope(gap) * area * length_m / force_n_;
+      const double dp = points_.Held(gap) ? 0.0 : pressure.Slope(gap) * area * length_m / force_n_;
       for (int i = 0; i < point.count; ++i) {
         force[point.dof[i]] += point.n[i] * p;
         for (int j = i; j < point.count; ++j) {

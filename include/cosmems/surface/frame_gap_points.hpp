@@ -37,6 +37,9 @@ struct FrameGapOptions {
   /// a body's rectangle over one.
   int points = 4;
   FrameGapLayout layout = FrameGapLayout::kQuadrature;
+  /// m: the contact plane's height above the substrate when the scene has contact, which holds
+  /// the gap from below (Gap()), as on the beam (GapSpan::separation); 0: no contact.
+  double separation = 0.0;
 };
 
 /// The quadrature points of a frame's faces over the electrodes of the substrate, each with its
@@ -66,6 +69,8 @@ class FrameGapPoints {
   FrameGapPoints(const FrameModel& model, const FrameGapOptions& options)
       : model_(model), length_m_(model.units().length) {
     RequirePositive("gap", options.gap);
+    RequireWithin("separation", options.separation, 0.0, 0.5 * options.gap);
+    separation_m_ = options.separation;
     RequireWithin("quadrature points", options.points, 1, 64);
     const std::vector<Electrode>& electrodes = options.electrodes;
     for (std::size_t i = 0; i < electrodes.size(); ++i) {
@@ -117,10 +122,16 @@ class FrameGapPoints {
   /// metres per internal length unit
   double length_m() const { return length_m_; }
 
-  /// The point's gap [m] at the displacement d (internal units).
+  /// The point's gap [m] at the displacement d (internal units), at least the separation when
+  /// there is one (NaN stays NaN): an iterate the contact's penalty lets through the contact
+  /// plane meets the pressure there, not one growing like 1/g^n, which would outgrow the
+  /// penalty and lift every touching iterate off again (as on the beam, GapIntegral).
   double Gap(const Point& point, const Eigen::VectorXd& d) const {
-    return point.gap_m + Along(point, d) * length_m_;
+    const double gap = point.gap_m + Along(point, d) * length_m_;
+    return gap < separation_m_ ? separation_m_ : gap;
   }
+  /// Whether a gap Gap() gave [m] is the separation holding it: the pressure is constant there.
+  bool Held(double gap_m) const { return separation_m_ > 0.0 && gap_m <= separation_m_; }
   /// The point's motion toward +y per unit of the vector x (a displacement or a velocity),
   /// in x's internal units.
   static double Along(const Point& point, const Eigen::VectorXd& x) { return point.Dot(x); }
@@ -233,6 +244,7 @@ class FrameGapPoints {
   const FrameModel& model_;
   double length_m_;  ///< metres per internal length unit
   double substrate_m_ = 0.0;
+  double separation_m_ = 0.0;
   std::vector<Point> points_;
   std::vector<int> first_point_;
 };
