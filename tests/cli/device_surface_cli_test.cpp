@@ -139,13 +139,10 @@ TEST(DeviceSurfaceCliTest, TheContactCatchesThePlatePulledIn) {
   EXPECT_EQ(caught["contact_events"]["contacts"], 1);
 }
 
-// cantilever-stiction's beam as a member of a frame, released from the substrate: stuck in the S
-// shape with the beam's free span and length on the substrate (the same elements and crack front:
-// equal to round-off); the device's own lengths are null, and nodes.csv holds the tip lying down.
-TEST(DeviceSurfaceCliTest, ACantileverMemberReleasesAsTheCantilever) {
-  const testing::TempDirectory dir("frame_release");
-  testing::WriteFile(dir.path() / "member.toml", R"(
-[structure]
+// The embedded cantilever (200 x 20 x 2 um, silicon, 2 um over the substrate) as the one member
+// of a frame, in `elements` elements: the device the beam's surface analyses are checked against.
+std::string CantileverMember(int elements) {
+  return R"([structure]
 kind = "frame"
 thickness = 2e-6
 gap = 2e-6
@@ -164,7 +161,16 @@ young_modulus = 169e9
 density = 2330.0
 [model]
 dimension = 3
-elements = 100
+elements = )" +
+         std::to_string(elements) + "\n";
+}
+
+// cantilever-stiction's beam as a member of a frame, released from the substrate: stuck in the S
+// shape with the beam's free span and length on the substrate (the same elements and crack front:
+// equal to round-off); the device's own lengths are null, and nodes.csv holds the tip lying down.
+TEST(DeviceSurfaceCliTest, ACantileverMemberReleasesAsTheCantilever) {
+  const testing::TempDirectory dir("frame_release");
+  testing::WriteFile(dir.path() / "member.toml", CantileverMember(100) + R"(
 [effects]
 stiction = { adhesion_energy = 0.02 }
 [analysis]
@@ -197,27 +203,7 @@ type = "release"
 // within the tolerance, and with them R).
 TEST(DeviceSurfaceCliTest, ACantileverMemberPressedOntoTheSubstrateIsTheCantilever) {
   const testing::TempDirectory dir("frame_static_contact");
-  testing::WriteFile(dir.path() / "member.toml", R"(
-[structure]
-kind = "frame"
-thickness = 2e-6
-gap = 2e-6
-[[structure.nodes]]
-name = "clamp"
-position = [0.0, 0.0, 0.0]
-support = "clamped"
-[[structure.nodes]]
-name = "tip"
-position = [200e-6, 0.0, 0.0]
-[[structure.beams]]
-nodes = ["clamp", "tip"]
-width = 20e-6
-[material]
-young_modulus = 169e9
-density = 2330.0
-[model]
-dimension = 3
-elements = 20
+  testing::WriteFile(dir.path() / "member.toml", CantileverMember(20) + R"(
 [[loads.points]]
 node = "tip"
 force = [0.0, -6e-6, 0.0]
