@@ -52,17 +52,25 @@ class PlainNewtonScheme {
 /// group, and the static, pull-in and rod equilibria. A scheme supplies its residual, matrix,
 /// solve and update; the driver owns what happens between them and counts it (stats()):
 ///
-/// - Convergence: ||R|| <= residual_tolerance * reference, or a residual stalled at the rounding
-///   of its products (NewtonOptions::StalledAtRoundOff), or a correction below
-///   increment_tolerance of the iterate; then the scheme's forces may change their state
-///   (Settle: a contact multiplier updated, a node peeled off), and Newton starts afresh.
+/// - Convergence: ||R|| <= residual_tolerance * reference, or, past the first correction, a
+///   residual within the rounding error of the products that form it (RoundOff), below which no
+///   iteration can take it, or a correction below increment_tolerance of the iterate; then the
+///   scheme's forces may change their state (Settle: a contact multiplier updated, a node peeled
+///   off), and Newton starts afresh. A fine mesh meets the rounding test above the tolerance:
+///   its K d is a small difference of large products (SymmetricBandMatrix::ProductRoundOff). The
+///   bound costs a product as large as the residual's, so it is formed once a solve, at the
+///   first iterate the tolerance does not end; the iterates after it differ from that one by
+///   corrections too small to change it.
 /// - The iterate outside a force's domain (a gap closed under a 1/gap^n pressure) is pulled back
 ///   along its last correction, halving it up to 10 times (the first iterate has none).
 /// - The factor of the Newton matrix is kept, for the same matrix family (`key`, a step's
 ///   length), while its last solve cut the residual by NewtonOptions::reuse_contraction and,
 ///   past a solve's first iteration, another such cut would end it: a kept factor contracts
 ///   about as much as its last solve did, where a fresh one converges quadratically, and an
-///   iteration costs more than a factorisation on a beam. The residual is exact either way.
+///   iteration costs more than a factorisation on a beam. The residual is exact either way. A
+///   solve that took the residual to its rounding floor counts as a full contraction: the floor,
+///   not the factor, stopped it, so the factor serves the next step (on a fine mesh every step
+///   would otherwise refactor).
 /// - A matrix that is not definite (inside a Casimir or electrostatic snap) is factored again
 ///   with its mass term raised, up to that of a step 2^-10 as long: the iteration creeps the way
 ///   a shorter step would but solves this step's equations. A raised factor is never kept, and
@@ -149,6 +157,7 @@ class NewtonDriver {
   template <typename Scheme>
   Status Iterate(Scheme& scheme, double key) {
     double previous = 0.0;
+    double round_off = -1.0;  // the residual's rounding bound, once formed (-1: not yet)
     int settles = 0;
     // Newton has converged for the forces' present state: true if they keep it; otherwise Newton
     // starts afresh (the matrix changed with the state).
@@ -156,6 +165,7 @@ class NewtonDriver {
       if (scheme.Settle()) return true;
       ++settles;
       iteration = -1;
+      round_off = -1.0;  // the iterate may move far under the new state
       ForgetFactor();
       return false;
     };
@@ -169,17 +179,19 @@ class NewtonDriver {
       if (!std::isfinite(r.norm)) return Status::kNonFinite;
       if (iteration > 0) contraction_ = r.norm / previous;
       const double tolerance = options_.residual_tolerance * r.reference;
-      const bool converged =
-          (r.norm <= tolerance ||
-           (iteration > 0 && NewtonOptions::StalledAtRoundOff(
-                                 r.norm, previous, [&] { return scheme.RoundOff(); }))) &&
-          r.side_conditions_met;
-      if (converged) {
+      bool at_floor = false;
+      if (r.norm > tolerance && iteration > 0) {
+        if (round_off < 0.0) round_off = scheme.RoundOff();
+        at_floor = r.norm <= round_off;
+      }
+      if ((r.norm <= tolerance || at_floor) && r.side_conditions_met) {
+        if (at_floor) contraction_ = 0.0;
         if (settled(iteration)) return scheme.Finish();
         continue;
       }
       previous = r.norm;
-      const bool keep = key_ == key && contraction_ <= options_.reuse_contraction &&
+      const bool keep = options_.reuse_contraction > 0.0 && key_ == key &&
+                        contraction_ <= options_.reuse_contraction &&
                         (iteration == 0 || contraction_ * r.norm <= tolerance);
       bool shifted = false;
       if (keep) {

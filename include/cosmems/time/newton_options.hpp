@@ -28,16 +28,6 @@ struct NewtonOptions {
   /// node peeled off: NonlinearForce::Settle), each followed by a fresh set of iterations, in one
   /// step or one load step.
   int max_settles = 200;
-
-  /// Converged at the floor of rounding: a residual that kept over half its size through the
-  /// last iteration and lies within `round_off()`, the rounding error of the products that form
-  /// it, below which no iteration can take it. A fine mesh stops there above residual_tolerance:
-  /// its K d is a small difference of large products (SymmetricBandMatrix::ProductRoundOff).
-  /// `round_off` is called only for a stalled residual, so converging iterations never pay for it.
-  template <typename RoundOff>
-  static bool StalledAtRoundOff(double norm, double previous_norm, RoundOff&& round_off) {
-    return norm >= 0.5 * previous_norm && norm <= round_off();
-  }
 };
 
 /// Newton's defaults for rods: NewtonOptions with a residual tolerance of 1e-9 instead of 1e-10.

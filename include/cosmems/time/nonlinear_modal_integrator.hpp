@@ -303,13 +303,12 @@ class NonlinearModalIntegrator {
   }
 
   // The rounding error of G^-1 d, whose entries each sum n products (Higham 3.5); scratch_ holds
-  // |G^-1| |d|.
+  // |G^-1| |d|, summed column by column as G^-1 is stored.
   double RoundOff(const Eigen::MatrixXd& stiffness) {
     const Eigen::Index n = d_new_.size();
-    for (Eigen::Index i = 0; i < n; ++i) {
-      double sum = 0.0;
-      for (Eigen::Index j = 0; j < n; ++j) sum += std::abs(stiffness(i, j) * d_new_[j]);
-      scratch_[i] = sum;
+    scratch_.setZero();
+    for (Eigen::Index j = 0; j < n; ++j) {
+      scratch_ += std::abs(d_new_[j]) * stiffness.col(j).cwiseAbs();
     }
     const double mu = static_cast<double>(n) * 0.5 * std::numeric_limits<double>::epsilon();
     return mu / (1.0 - mu) * scratch_.norm();
