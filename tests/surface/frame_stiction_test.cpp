@@ -2,12 +2,16 @@
 // substrate as the release analysis does: a cantilever member inside a frame against the
 // validated beam (SubstrateContact) and the closed forms of its shapes, and a plate on four
 // springs against the plate's stiction criterion, its springs' stored energy against the
-// adhesion of its face.
+// adhesion of its face; a finely meshed device stuck under the probe keeps its haptic steps.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
+#include "cosmems/beam/force_sum.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
+#include "cosmems/structure/folded_flexure.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
 #include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "structure/test_frames.hpp"
@@ -99,6 +103,37 @@ TEST(FrameStictionTest, ACantileverMemberReleasesAsTheBeam) {
       EXPECT_NEAR(member.detached_length_m, StuckSpan(), 1.5 * c.length / elements);
     }
   }
+}
+
+// A finely meshed device stuck under the probe: the folded flexure of 1000 elements (125 a beam),
+// its shuttle pressed down by the probe onto a substrate 2 um below it with the Casimir force on,
+// sticks there (near tick 137), and every haptic step converges while the probe presses it stuck.
+// A stuck node's held stiffness grows as the cube of the element count; uncapped, this press
+// failed at tick 194 (Newton's matrix too ill-conditioned to converge), so it runs 210 ticks.
+TEST(FrameStictionTest, AFinelyMeshedShuttleStuckUnderTheProbeKeepsStepping) {
+  FoldedFlexureDesign design;
+  design.elements = 125;
+  const FrameModel model(FoldedFlexure(design));
+  const double gap = 2e-6;
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{gap});
+  ContactOptions substrate = Adhesion(gap, 1e-6);
+  substrate.separation = 1e-2 * gap;
+  FrameSubstrateContact contact(model, substrate);
+  ForceSum forces;
+  forces.Add(casimir);
+  forces.Add(contact);
+  HapticPhysicsOptions physics;
+  physics.damping = DampingModel::QualityFactor(100);
+  HapticStructure structure(model, ProbeOptions{2e-6, 50.0}, &forces, &contact, physics);
+  // Into the shuttle's top face (1 um above its axis) 16 nm a tick.
+  for (int tick = 0; tick < 210; ++tick) {
+    const double depth = 16e-9 * tick;
+    ASSERT_EQ(structure.Advance(Eigen::Vector3d(3e-6, 3e-6 - depth, 5e-6), 0.0), Status::kOk)
+        << "tick " << tick;
+  }
+  EXPECT_EQ(contact.events().stuck, 1);
+  EXPECT_EQ(contact.Summary().state, ContactState::kStuck);
+  EXPECT_GT(structure.local_model().force_n, 0.0);
 }
 
 // The tip stuck alone: its energy release rate is the compliance method's p^2 theta / b, which
