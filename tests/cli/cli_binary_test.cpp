@@ -18,7 +18,8 @@ struct Process {
   std::string err;
 };
 
-// Runs the binary with `args` (shell syntax), capturing stdout and stderr apart.
+// Runs the binary with `args` (shell syntax), capturing stdout and stderr apart. COSMEMS_BINARY
+// is its path from the folder CTest runs the tests in.
 Process RunBinary(const std::string& args) {
   const testing::TempDirectory dir;
   const std::string err_path = (dir.path() / "stderr.txt").string();
