@@ -2,7 +2,8 @@
 // against the roots and folds of its one-degree-of-freedom balance, solved here; the gas film
 // under a plate (PlateSqueezeFactors) against Reynolds' equation solved here by finite
 // differences, and a plate ringing down on its film against the oscillator integrated here; the
-// film's tangents against differences of its force.
+// film's tangents against differences of its force; the gap-adaptive quadrature of a member and
+// a plate nearly touching against the energy's gradient and closed forms.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -180,6 +181,178 @@ TEST(FrameSurfaceForceTest, TheSeparationHoldsTheGapUnderASurfacePressure) {
   const double at_own = CasimirPressure{}.Value(0.05 * kCasimirGap) * device.area;
   EXPECT_NEAR(own, at_own, 1e-12 * at_own);
   EXPECT_LT(slope, 0.0);
+}
+
+// A member or a plate with 1 % of its gap left at one end: the Casimir pressure (1/g^4) varies
+// there over a fiftieth of the element or plate, where a fixed Gauss rule loses percents. The
+// quadrature halves each face until its gap varies by at most 1.25 (FrameGapIntegral); what is
+// left is the 4-point rule's error on such intervals, ~1e-8 of the force (as on the beam).
+
+// The netlist cantilever of the reference beam (20 elements), 2 um over the substrate.
+StructureDescription NetlistCantilever() {
+  StructureDescription s;
+  s.series_order = 1;
+  s.nodes.push_back({"root", Eigen::Vector3d::Zero(), AnchorOf(Support::kClamped)});
+  s.nodes.push_back({"tip", {test::kReferenceLength, 0.0, 0.0}, AnchorOf(Support::kFree)});
+  s.members.push_back(
+      {0, 1, test::Silicon(), test::ReferenceSection(), 20, Eigen::Vector3d::UnitY()});
+  return s;
+}
+
+// The member's deflection toward +y [m] for the state x (internal units) at t in [0, 1] along
+// its element: the Hermite cubic of the element's end values and slopes, written here.
+double MemberDeflection(const FrameModel& model, const Eigen::VectorXd& x,
+                        const FrameMesh::Element& element, double t) {
+  const FrameMesh& mesh = model.mesh();
+  const auto at = [&](int node, int k) {
+    const int dof = model.CarrierDof(mesh.nodes[node].carrier, k);
+    return dof >= 0 ? x[dof] : 0.0;
+  };
+  const double l = model.units().length, h = element.length;
+  const double t2 = t * t, t3 = t2 * t;
+  return (1 - 3 * t2 + 2 * t3) * at(element.from, 1) * l +
+         (t - 2 * t2 + t3) * h * at(element.from, 5) + (3 * t2 - 2 * t3) * at(element.to, 1) * l +
+         (t3 - t2) * h * at(element.to, 5);
+}
+
+// The integral of f(gap [m], deflection of y [m], m) over the member's lower face (width b),
+// by 4 Gauss points on each of 400 intervals of each element (2.5 % of the shortest length over
+// which the gap varies in these tests).
+template <typename F>
+double OverTheMember(const FrameModel& model, const Eigen::VectorXd& d, const Eigen::VectorXd& y,
+                     double gap, F&& f) {
+  const GaussLegendre rule = GaussLegendre::Of(4);
+  double sum = 0.0;
+  for (const FrameMesh::Element& element : model.mesh().elements) {
+    constexpr int kIntervals = 400;
+    for (int i = 0; i < kIntervals; ++i) {
+      for (std::size_t k = 0; k < rule.points.size(); ++k) {
+        const double t = (i + rule.points[k]) / kIntervals;
+        const double g = gap + MemberDeflection(model, d, element, t);
+        sum += rule.weights[k] * element.length / kIntervals * test::kReferenceWidth *
+               f(g, MemberDeflection(model, y, element, t));
+      }
+    }
+  }
+  return sum;
+}
+
+// The member bent to the tip-load shape with its tip 1 % of the gap from the substrate.
+// - Casimir: its force against the gradient of the energy -int C b / (3 g^3) dx; central
+//   differences leave ~1e-7: 1e-5 asserted. The same force by the fixed rule (gap_ratio 100: no
+//   halving at these gaps) is 1 % off or more.
+// - The gas film, moving in that shape: the power it takes, v^T r, against
+//   int mu b^3 v_y^2 / g^3 dx (no rarefaction); the quadrature's ~1e-8: 1e-7 asserted.
+TEST(FrameGapIntegralTest, AMemberNearlyTouchingTakesTheForceOfItsEnergy) {
+  const FrameModel model(NetlistCantilever());
+  const double l = model.units().length, gap = test::kReferenceGap, tip = 0.99 * gap;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  for (const FrameMesh::Node& node : model.mesh().nodes) {
+    const double xi = node.position.x() / test::kReferenceLength;
+    const int uy = model.CarrierDof(node.carrier, 1), rz = model.CarrierDof(node.carrier, 5);
+    if (uy >= 0) d[uy] = -tip * xi * xi * (3.0 - xi) / 2.0 / l;
+    if (rz >= 0) d[rz] = -tip * 3.0 * xi * (2.0 - xi) / 2.0 / test::kReferenceLength;
+  }
+  const auto energy = [&](const Eigen::VectorXd& state) {
+    const double sum = OverTheMember(model, state, state, gap,
+                                     [](double g, double) { return 1.0 / (3.0 * g * g * g); });
+    return -CasimirPressure::Coefficient() * sum / (model.units().force * l);
+  };
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, FrameGapOptions{gap});
+  test::ExpectForceAndTangentMatchDifferences(casimir, d, model.Stiffness().bandwidth(), energy,
+                                              1e-6 * gap / l, 1e-5);
+
+  FrameGapOptions fixed{gap};
+  fixed.gap_ratio = 100.0;
+  FrameGapForce<CasimirPressure> coarse(model, CasimirPressure{}, fixed);
+  Eigen::VectorXd adaptive_r = Eigen::VectorXd::Zero(d.size()), fixed_r = adaptive_r;
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  ASSERT_TRUE(casimir.Evaluate(d, adaptive_r, tangent));
+  ASSERT_TRUE(coarse.Evaluate(d, fixed_r, tangent));
+  const double miss = (fixed_r - adaptive_r).norm() / adaptive_r.norm();
+  std::printf("member at 1 %% of its gap: the fixed rule misses the force by %.2g\n", miss);
+  EXPECT_GT(miss, 1e-2);
+
+  constexpr double kAir = 1.81e-5;  // Pa s
+  FrameSqueezeFilm film(model, SqueezeFilmOptions{kAir, 0.0}, gap);
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
+  tangent.Clear();
+  ASSERT_TRUE(film.EvaluateViscous(d, d, 0.0, r, tangent));
+  const UnitSystem& u = model.units();
+  const double power = d.dot(r) * u.force * u.length / u.time;
+  const double b3 = std::pow(test::kReferenceWidth, 3);
+  const double expected = OverTheMember(model, d, d, gap, [&](double g, double y) {
+    const double vy = y / u.time;
+    return kAir * b3 * vy * vy / (g * g * g) / test::kReferenceWidth;
+  });
+  std::printf("film on the member at 1 %% of its gap: power error %.1e\n",
+              std::abs(power / expected - 1.0));
+  EXPECT_NEAR(power, expected, 1e-7 * expected);
+}
+
+// A plate tilted so that its gap runs from 1 % to 150 % of the nominal gap along x, then also
+// along z: its Casimir force and moments against the closed forms of the integrals of C / g^4
+// over the rectangle for a gap linear in x (and z). The quadrature's ~1e-8: 1e-7 asserted. The
+// fixed rule misses the force by percents.
+TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
+  const test::PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const double l = model.units().length, f = model.units().force, gap = 2e-6, side = device.side;
+  const double c = CasimirPressure::Coefficient();
+  const int plate = model.mesh().body_carrier[0];
+  const int uy = model.CarrierDof(plate, 1), tx = model.CarrierDof(plate, 3),
+            tz = model.CarrierDof(plate, 5);
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{},
+                                         FrameGapOptions{gap, {device.plate}});
+  FrameGapOptions fixed{gap, {device.plate}};
+  fixed.gap_ratio = 100.0;
+  FrameGapForce<CasimirPressure> coarse(model, CasimirPressure{}, fixed);
+  const auto evaluate = [&](FrameGapForce<CasimirPressure>& force, const Eigen::VectorXd& d) {
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
+    ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+    EXPECT_TRUE(force.Evaluate(d, r, tangent));
+    return r;
+  };
+  // The gap g_c + s x + t z over the plate (x, z from its centre): u_y l = g_c - gap,
+  // theta_z = s, theta_x = -t.
+  const double low = 0.01 * gap, high = 1.5 * gap, centre = 0.5 * (low + high);
+  const double s = (high - low) / side;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  d[uy] = (centre - gap) / l;
+  d[tz] = s;
+  // Along x alone: F = side C / (3 s) [g^-3] and M_z = side / s^2 [-C / (2 g^2) + g_c C / (3 g^3)],
+  // both from high to low.
+  const auto force_x = [&](double g) { return side * c / (3.0 * s * g * g * g); };
+  const auto moment_x = [&](double g) {
+    return side / (s * s) * (-c / (2.0 * g * g) + centre * c / (3.0 * g * g * g));
+  };
+  const double force = force_x(low) - force_x(high);
+  const double moment = moment_x(high) - moment_x(low);
+  Eigen::VectorXd r = evaluate(casimir, d);
+  std::printf("plate tilted along x: force %.3e N, error %.1e; moment error %.1e\n", force,
+              std::abs(r[uy] * f / force - 1.0), std::abs(r[tz] * f * l / moment - 1.0));
+  EXPECT_NEAR(r[uy] * f, force, 1e-7 * force);
+  EXPECT_NEAR(r[tz] * f * l, moment, 1e-7 * std::abs(moment));
+  EXPECT_NEAR(r[tx], 0.0, 1e-12 * std::abs(r[tz]));
+  EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+
+  // Along the diagonal: the gap's range split between x and z, F = sum over the corners of
+  // +-C / (6 s t g^2) (the mixed antiderivative of C / g^4).
+  const double half = 0.5 * (high - low) / side;
+  d[tz] = half;
+  d[tx] = -half;
+  const auto corner = [&](double x, double z) {
+    const double g = centre + half * (x + z);
+    return c / (6.0 * half * half * g * g);
+  };
+  const double h = 0.5 * side;
+  const double diagonal = corner(h, h) - corner(-h, h) - corner(h, -h) + corner(-h, -h);
+  r = evaluate(casimir, d);
+  std::printf("plate tilted along the diagonal: force error %.1e\n",
+              std::abs(r[uy] * f / diagonal - 1.0));
+  EXPECT_NEAR(r[uy] * f, diagonal, 1e-7 * diagonal);
+  EXPECT_NEAR(r[tz], -r[tx], 1e-9 * std::abs(r[tz]));
+  EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
 }
 
 // With Casimir beside it the electrode pulls the plate in sooner: the fold of

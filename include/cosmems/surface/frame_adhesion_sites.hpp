@@ -6,12 +6,12 @@
 
 #include "cosmems/structure/dof_weights.hpp"
 #include "cosmems/structure/frame_model.hpp"
-#include "cosmems/surface/frame_gap_points.hpp"
+#include "cosmems/surface/frame_contact_points.hpp"
 
 namespace cosmems {
 
 /// Where adhesion can hold a device on the substrate, over the contact points of a
-/// FrameGapPoints in the kContact layout: which points stick, what they hold and how they release
+/// FrameContactPoints: which points stick, what they hold and how they release
 /// (FrameSubstrateContact with stiction).
 ///
 /// A member sticks at its nodes, as the beam does: each node point off a body is a site with its
@@ -41,7 +41,7 @@ class FrameAdhesionSites {
     double area = 0.0;  ///< its lower face (internal length^2)
   };
 
-  FrameAdhesionSites(const FrameModel& model, const FrameGapPoints& points) {
+  FrameAdhesionSites(const FrameModel& model, const FrameContactPoints& points) {
     const double length_m = model.units().length;
     const FrameMesh& mesh = model.mesh();
     const std::size_t count = points.points().size();

@@ -1,11 +1,11 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <array>
+#include <utility>
 #include <vector>
 
 #include "cosmems/structure/frame_model.hpp"
-#include "cosmems/surface/frame_gap_points.hpp"
+#include "cosmems/surface/frame_gap_integral.hpp"
 #include "cosmems/surface/plate_squeeze_factors.hpp"
 #include "cosmems/surface/squeeze_film.hpp"
 
@@ -13,7 +13,8 @@ namespace cosmems {
 
 /// Squeeze-film damping under a frame whose faces lie `gap` above the substrate at their lowest:
 /// every member parallel to the substrate is a strip, c(d) = mu_eff(d) b^3 / d^3 per length at
-/// each of its points' own gap d (SqueezeFilm's law on FrameGapPoints), and every body is a
+/// each of its points' own gap d (SqueezeFilm's law, integrated to the gap by FrameGapIntegral
+/// as on the beam: c grows like 1/d^3 near contact), and every body is a
 /// rigid plate whose film is the rectangular plate's Reynolds solution (PlateSqueezeFactors):
 ///   F_y = -mu_eff(h) / h^3 translation v_y,  M_x, M_z alike with the tilt factors,
 /// h the gap under the plate's centre (the tilt's variation of the gap across the plate is left
@@ -25,8 +26,7 @@ class FrameSqueezeFilm final : public GasFilmForce {
   /// Throws std::invalid_argument for a gap that is not positive or invalid options.
   FrameSqueezeFilm(const FrameModel& model, const SqueezeFilmOptions& options, double gap)
       : options_(options.Validated()),
-        points_(model, FrameGapOptions{gap}),
-        members_end_(points_.first(model.ElementCount())),
+        strips_(model, Strips(gap)),
         length_m_(model.units().length),
         time_s_(model.units().time),
         force_n_(model.units().force) {
@@ -34,7 +34,7 @@ class FrameSqueezeFilm final : public GasFilmForce {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
       const int carrier = model.mesh().body_carrier[b];
       Plate plate;
-      plate.gap_m = bodies[b].center.y() - 0.5 * bodies[b].size.y() - points_.substrate_m();
+      plate.gap_m = bodies[b].center.y() - 0.5 * bodies[b].size.y() - strips_.substrate_m();
       plate.factors = PlateSqueezeFactors::Of(bodies[b].size.x(), bodies[b].size.z());
       plate.uy = model.CarrierDof(carrier, 1);
       plate.theta_x = model.CarrierDof(carrier, 3);
@@ -47,18 +47,19 @@ class FrameSqueezeFilm final : public GasFilmForce {
   bool EvaluateViscous(const Eigen::VectorXd& d, const Eigen::VectorXd& v, double velocity_factor,
                        Eigen::VectorXd& force, ForceTangent& tangent) override {
     const double speed_m_s = length_m_ / time_s_;
-    for (int k = 0; k < members_end_; ++k) {
-      const FrameGapPoints::Point& point = points_.points()[k];
-      const double gap = points_.Gap(point, d);
-      if (!(gap > 0.0)) return false;
-      const auto [c, slope] = options_.Coefficient(gap);  // per b^3
-      // b^3 times the strip's length at the point: b^2 times its area.
-      const double b2a = point.width_m * point.width_m * point.area_m2 / force_n_;
-      const double vy = FrameGapPoints::Along(point, v) * speed_m_s;
-      // r = n c v_y; dr/dd = n c' v_y n^T, dr/dv = n c n^T (times dv/dd along the step).
-      Add(point.dof, point.n, point.count, b2a * c * vy,
-          b2a * (slope * length_m_ * vy + c * speed_m_s * velocity_factor), force, tangent);
-    }
+    // r = n c v_y; dr/dd = n c' v_y n^T, dr/dv = n c n^T (times dv/dd along the step).
+    const bool open = strips_.Integrate(
+        d, &v,
+        [&](const FrameGapIntegral::Face& face, double gap, double area_m2, double v_y) {
+          const auto [c, slope] = options_.Coefficient(gap);  // per b^3
+          // b^3 times the strip's length at the point: b^2 times its area.
+          const double b2a = face.width_m * face.width_m * area_m2 / force_n_;
+          const double vy = v_y * speed_m_s;
+          return std::pair{b2a * c * vy,
+                           b2a * (slope * length_m_ * vy + c * speed_m_s * velocity_factor)};
+        },
+        force, tangent);
+    if (!open) return false;
     for (const Plate& plate : plates_) {
       const double h = plate.gap_m + (plate.uy >= 0 ? d[plate.uy] * length_m_ : 0.0);
       if (!(h > 0.0)) return false;
@@ -87,6 +88,13 @@ class FrameSqueezeFilm final : public GasFilmForce {
   }
 
  private:
+  // The members' strips over the substrate (the plates have their own law).
+  static FrameGapOptions Strips(double gap) {
+    FrameGapOptions options{gap};
+    options.plates = false;
+    return options;
+  }
+
   // A body's plate: its gap at rest, its film's shape factors and its carrier's u_y, theta_x
   // and theta_z degrees of freedom (-1 where held).
   struct Plate {
@@ -95,18 +103,8 @@ class FrameSqueezeFilm final : public GasFilmForce {
     int uy = -1, theta_x = -1, theta_z = -1;
   };
 
-  // force += n value, tangent += n slope n^T over the point's distinct dofs.
-  static void Add(const std::array<int, 12>& dof, const std::array<double, 12>& n, int count,
-                  double value, double slope, Eigen::VectorXd& force, ForceTangent& tangent) {
-    for (int i = 0; i < count; ++i) {
-      force[dof[i]] += n[i] * value;
-      for (int j = i; j < count; ++j) tangent.band().Add(dof[i], dof[j], slope * n[i] * n[j]);
-    }
-  }
-
   SqueezeFilmOptions options_;
-  FrameGapPoints points_;
-  int members_end_;  ///< the members' points are points_[0, members_end_)
+  FrameGapIntegral strips_;  ///< the members' strips
   std::vector<Plate> plates_;
   double length_m_;  ///< metres per internal length unit
   double time_s_;    ///< seconds per internal time unit

@@ -14,7 +14,7 @@
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/surface/contact_state.hpp"
 #include "cosmems/surface/frame_adhesion_sites.hpp"
-#include "cosmems/surface/frame_gap_points.hpp"
+#include "cosmems/surface/frame_contact_points.hpp"
 #include "cosmems/surface/impact_projection.hpp"
 #include "cosmems/surface/substrate_contact_model.hpp"
 
@@ -22,7 +22,7 @@ namespace cosmems {
 
 /// The substrate as a unilateral constraint under any structure (a FrameModel): the beam's
 /// contact law (SubstrateContact) at the points where a device's faces can touch first
-/// (FrameGapLayout::kContact: each member element's nodes and quarter points on its lower face,
+/// (FrameContactPoints: each member element's nodes and quarter points on its lower face,
 /// each body's four lower corners), each at its own gap to the contact plane, `gap` below the
 /// structure's lowest face and `separation` above the substrate.
 ///
@@ -75,7 +75,7 @@ class FrameSubstrateContact final : public FrameElementForce {
   /// beam's meanings, with the structure's lowest face for the beam's); throws
   /// std::invalid_argument as SubstrateContactModel does.
   FrameSubstrateContact(const FrameModel& model, const ContactOptions& options)
-      : points_(model, FrameGapOptions{options.gap, {Electrode{}}, 4, FrameGapLayout::kContact}),
+      : points_(model, options.gap),
         sites_(model, points_),
         model_(model),
         length_m_(model.units().length),
@@ -120,7 +120,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     rest_.resize(m);
     nearest_ = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < m; ++k) {
-      const FrameGapPoints::Point& point = points_.points()[k];
+      const FrameContactPoints::Point& point = points_.points()[k];
       rest_[k] = point.gap_m / length_m_ - separation_;
       nearest_ = std::min(nearest_, rest_[k]);
       double reach = 0.0;
@@ -363,8 +363,8 @@ class FrameSubstrateContact final : public FrameElementForce {
   }
   const ContactEvents& events() const { return events_; }
 
-  /// The points held, their gaps at rest and motions (FrameGapPoints, kContact layout).
-  const FrameGapPoints& points() const { return points_; }
+  /// The points held, their gaps at rest and motions (FrameContactPoints).
+  const FrameContactPoints& points() const { return points_; }
   /// Where adhesion can hold the points (FrameAdhesionSites).
   const FrameAdhesionSites& sites() const { return sites_; }
   /// The local gap to the contact plane at point k for d [m] (negative: through it).
@@ -562,7 +562,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     return reach_ * d.cwiseAbs().template maxCoeff<Eigen::PropagateNaN>() < nearest_ - margin;
   }
 
-  FrameGapPoints points_;
+  FrameContactPoints points_;
   FrameAdhesionSites sites_;
   const FrameModel& model_;
   double length_m_;

@@ -121,7 +121,7 @@ class ImpactProjection {
   std::vector<char> solved_;  ///< the points whose column is made
   Eigen::MatrixXd schur_;
   Eigen::VectorXd multipliers_;
-  std::vector<int> held_set_;  ///< the held points columns_ and schur_ were made for
+  std::vector<int> held_set_;  ///< the held points schur_ was made for
   int held_ = 0;               ///< their count (0: none made)
   std::vector<char> kept_;     ///< the rows the factor keeps
 };

@@ -1,0 +1,341 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "cosmems/beam/hermite_shapes.hpp"
+#include "cosmems/beam/nonlinear_force.hpp"
+#include "cosmems/core/gauss_legendre.hpp"
+#include "cosmems/core/validation.hpp"
+#include "cosmems/structure/frame_model.hpp"
+#include "cosmems/surface/frame_faces.hpp"
+
+namespace cosmems {
+
+/// The quadrature of a pressure p(g) over a frame's faces over the electrodes (FrameFaces), each
+/// face subdivided to the gap as the beam's (GapIntegral): pressures that grow like 1/g^n vary,
+/// where a face nears the substrate, over lengths of order g / |slope|, far shorter than an
+/// element or a plate.
+///
+/// Each face's gap is g_0 + c . phi, its four coefficients c a fixed linear map B^T d of the
+/// displacement: on a strip the Hermite cubic's end values and end slopes times the element's
+/// length (phi the Hermite values at xi), on a plate u_y, theta_x and theta_z of its body
+/// (phi = 1, -z, x). A strip is halved, recursively, until its largest gap (at its ends and
+/// midpoint) is at most FrameGapOptions::gap_ratio times its smallest; a plate's gap is linear,
+/// so its extremes are at its corners, and it is halved across its steeper side until they
+/// differ by at most that ratio. Each interval gets the Gauss rule (the tensor rule on a plate).
+/// The force and tangent gather in c's four coefficients, face by face, and reach the
+/// structure's degrees of freedom through B once per face:
+///   r = sum over faces B sum_points phi p(g) A,   dr/dd = sum B (sum phi p'(g) phi^T A) B^T.
+/// The gap is held at the contact's separation from below, as on the beam. Allocates nothing.
+class FrameGapIntegral {
+ public:
+  /// One face: its coefficients' weights over the degrees of freedom it moves with.
+  struct Face {
+    bool plate = false;
+    int index = 0;  ///< into FrameFaces::strips() or plates()
+    int element = -1;
+    double gap_m = 0.0;  ///< at rest
+    double width_m = 0.0;
+    std::array<int, 12> dof{};  ///< the distinct degrees of freedom (count of them)
+    int count = 0;
+    Eigen::Matrix<double, 12, 4> weights = Eigen::Matrix<double, 12, 4>::Zero();  ///< B's rows
+    /// On a strip, its element's local degrees of freedom per coefficient (LocalForce).
+    Eigen::Matrix<double, 12, 4> local = Eigen::Matrix<double, 12, 4>::Zero();
+  };
+
+  /// Throws std::invalid_argument for the options FrameFaces refuses, or a separation, number of
+  /// points or gap ratio out of range.
+  FrameGapIntegral(const FrameModel& model, const FrameGapOptions& options)
+      : geometry_(model, options.gap, options.electrodes),
+        length_m_(model.units().length),
+        per_length_m_(1.0 / length_m_),
+        ratio_(options.gap_ratio),
+        plates_(options.plates),
+        rule_(GaussLegendre::Of(options.points)) {
+    RequireWithin("separation", options.separation, 0.0, 0.5 * options.gap);
+    RequireWithin("gap_ratio", options.gap_ratio, 1.01, 100.0);
+    separation_m_ = options.separation;
+    const std::array<std::array<double, 4>, 4> unit = {
+        {{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 1.0, 0.0}, {0.0, 0.0, 0.0, 1.0}}};
+    first_face_.assign(model.ElementCount() + 1, 0);
+    for (std::size_t s = 0; s < geometry_.strips().size(); ++s) {
+      const FrameFaces::Strip& strip = geometry_.strips()[s];
+      Face face;
+      face.index = static_cast<int>(s);
+      face.element = strip.element;
+      face.gap_m = strip.gap_m;
+      face.width_m = strip.width_m;
+      Eigen::Matrix<double, 12, 4> global;
+      for (int k = 0; k < 4; ++k) {
+        face.local.col(k) = geometry_.StripLocal(strip, unit[k]);
+        global.col(k) = geometry_.StripWeights(strip, unit[k]);
+      }
+      SetWeights(face, model.ElementDofs(strip.element), global);
+      faces_.push_back(face);
+      for (const double p : rule_.points) strip_phi_.push_back(StripPhi(Along(strip, p)));
+      for (const double p : {0.0, 0.5, 1.0}) strip_phi_.push_back(StripPhi(Along(strip, p)));
+      ++first_face_[strip.element + 1];
+    }
+    for (int e = 0; e < model.ElementCount(); ++e) first_face_[e + 1] += first_face_[e];
+    for (std::size_t p = 0; p < geometry_.plates().size(); ++p) {
+      const FrameFaces::Plate& plate = geometry_.plates()[p];
+      Face face;
+      face.plate = true;
+      face.index = static_cast<int>(p);
+      face.gap_m = plate.gap_m;
+      face.width_m = plate.width_m;
+      // The coefficients are the carrier's u_y, theta_x, theta_z themselves.
+      Eigen::Matrix<double, 12, 4> global = Eigen::Matrix<double, 12, 4>::Zero();
+      global(0, 0) = global(1, 1) = global(2, 2) = 1.0;
+      SetWeights(face, plate.dofs, global);
+      faces_.push_back(face);
+    }
+  }
+
+  const std::vector<Face>& faces() const { return faces_; }
+  /// metres per internal length unit
+  double length_m() const { return length_m_; }
+  /// The substrate plane's y [m].
+  double substrate_m() const { return geometry_.substrate_m(); }
+  /// Whether a gap the quadrature passed [m] is the contact's separation holding it: a pressure
+  /// is constant there, its slope zero.
+  bool Held(double gap_m) const { return separation_m_ > 0.0 && gap_m <= separation_m_; }
+
+  /// Adds r(d) to `force` and its tangent to `tangent`, law(face, gap [m], area [m^2], v_y)
+  /// giving the point's force along its motion toward +y and that force's derivative per
+  /// internal length unit of the motion, both in internal force units; v_y is the point's
+  /// velocity toward +y for the velocity `v` (internal units; 0 without one). False where a gap
+  /// closes or is not finite.
+  template <typename Law>
+  bool Integrate(const Eigen::VectorXd& d, const Eigen::VectorXd* v, Law&& law,
+                 Eigen::VectorXd& force, ForceTangent& tangent) const {
+    for (const Face& face : faces_) {
+      if (face.plate && !plates_) continue;
+      Eigen::Vector4d f = Eigen::Vector4d::Zero();
+      Eigen::Matrix4d t = Eigen::Matrix4d::Zero();
+      const Eigen::Vector4d cv = v ? Coefficients(face, *v) : Eigen::Vector4d::Zero();
+      const bool open = Visit(face, d, [&](const Eigen::Vector4d& phi, double gap, double area) {
+        const auto [value, slope] = law(face, gap, area, cv.dot(phi));
+        f += value * phi;
+        for (int a = 0; a < 4; ++a) {
+          const double sa = slope * phi[a];
+          for (int b = a; b < 4; ++b) t(a, b) += sa * phi[b];
+        }
+      });
+      if (!open) return false;
+      for (int a = 0; a < 4; ++a) {
+        for (int b = 0; b < a; ++b) t(a, b) = t(b, a);
+      }
+      for (int i = 0; i < face.count; ++i) {
+        const Eigen::Vector4d ti = t * face.weights.row(i).transpose();
+        force[face.dof[i]] += face.weights.row(i).dot(f);
+        for (int j = i; j < face.count; ++j) {
+          tangent.band().Add(face.dof[i], face.dof[j], face.weights.row(j).dot(ti));
+        }
+      }
+    }
+    return true;
+  }
+
+  /// Element e's share of the force law(face, gap [m], area [m^2]) gives along each point's
+  /// motion, in its local degrees of freedom.
+  template <typename Law>
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e, Law&& law) const {
+    FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
+    for (int k = first_face_[e]; k < first_face_[e + 1]; ++k) {
+      const Face& face = faces_[k];
+      Eigen::Vector4d f = Eigen::Vector4d::Zero();
+      Visit(face, d, [&](const Eigen::Vector4d& phi, double gap, double area) {
+        f += law(face, gap, area) * phi;
+      });
+      out += face.local * f;
+    }
+    return out;
+  }
+
+  /// The sum of value(face, gap [m], area [m^2]) over every point; NaN where a gap closes.
+  template <typename Value>
+  double Sum(const Eigen::VectorXd& d, Value&& value) const {
+    double sum = 0.0;
+    for (const Face& face : faces_) {
+      if (face.plate && !plates_) continue;
+      const bool open = Visit(face, d, [&](const Eigen::Vector4d&, double gap, double area) {
+        sum += value(face, gap, area);
+      });
+      if (!open) return std::numeric_limits<double>::quiet_NaN();
+    }
+    return sum;
+  }
+
+ private:
+  // Keeps the rows of the element's (or carrier's) degrees of freedom that move the face, merged
+  // by dof (an element whose ends share a body) and without the rotation's round-off (below
+  // 1e-12 of the largest weight), as DofWeights does.
+  static void SetWeights(Face& face, const std::array<int, 12>& dofs,
+                         const Eigen::Matrix<double, 12, 4>& global) {
+    const double largest = global.cwiseAbs().maxCoeff();
+    face.count = 0;
+    for (int a = 0; a < 12; ++a) {
+      if (dofs[a] < 0) continue;
+      Eigen::Matrix<double, 1, 4> row = global.row(a);
+      for (int k = 0; k < 4; ++k) {
+        if (std::abs(row[k]) <= 1e-12 * largest) row[k] = 0.0;
+      }
+      if (row.isZero()) continue;
+      int* end = face.dof.data() + face.count;
+      int* at = std::find(face.dof.data(), end, dofs[a]);
+      if (at == end) {
+        face.dof[face.count] = dofs[a];
+        face.weights.row(face.count++) = row;
+      } else {
+        face.weights.row(at - face.dof.data()) += row;
+      }
+    }
+  }
+
+  // The face's coefficients B^T x for the vector x.
+  static Eigen::Vector4d Coefficients(const Face& face, const Eigen::VectorXd& x) {
+    Eigen::Vector4d c = Eigen::Vector4d::Zero();
+    for (int i = 0; i < face.count; ++i) c += x[face.dof[i]] * face.weights.row(i).transpose();
+    return c;
+  }
+
+  // The gap [m] for the coefficients c (internal units) at phi, at least the separation (NaN
+  // stays NaN).
+  double Gap(const Face& face, const Eigen::Vector4d& c, const Eigen::Vector4d& phi) const {
+    const double gap = face.gap_m + c.dot(phi) * length_m_;
+    return gap < separation_m_ ? separation_m_ : gap;
+  }
+  // The element's coordinate at the fraction p of the strip.
+  static double Along(const FrameFaces::Strip& strip, double p) {
+    return strip.lo + p * (strip.hi - strip.lo);
+  }
+  static Eigen::Vector4d StripPhi(double xi) {
+    const std::array<double, 4> h = HermiteShapes(xi);
+    return {h[0], h[1], h[2], h[3]};
+  }
+  Eigen::Vector4d PlatePhi(double x, double z) const {
+    return {1.0, -z * per_length_m_, x * per_length_m_, 0.0};
+  }
+
+  // Calls at(phi, gap [m], area [m^2]) at every quadrature point of the face for the state d;
+  // false where the gap closes or is not finite.
+  template <typename AtPoint>
+  bool Visit(const Face& face, const Eigen::VectorXd& d, AtPoint&& at) const {
+    const Eigen::Vector4d c = Coefficients(face, d);
+    return face.plate ? VisitPlate(face, c, at) : VisitStrip(face, c, at);
+  }
+
+  template <typename AtPoint>
+  bool VisitStrip(const Face& face, const Eigen::Vector4d& c, AtPoint& at) const {
+    const FrameFaces::Strip& strip = geometry_.strips()[face.index];
+    const double area_per_xi = strip.length_m * strip.width_m;
+    // The whole strip first, on the shapes kept for it: most strips need no halving.
+    const std::size_t n = rule_.points.size();
+    const Eigen::Vector4d* whole = &strip_phi_[face.index * (n + 3)];
+    const double g_lo = Gap(face, c, whole[n]), g_hi = Gap(face, c, whole[n + 2]);
+    const double g_mid = Gap(face, c, whole[n + 1]);
+    const double low = std::min({g_lo, g_mid, g_hi}), high = std::max({g_lo, g_mid, g_hi});
+    if (!(low > 0.0)) return false;  // closed, or not finite
+    if (high <= ratio_ * low) {
+      for (std::size_t k = 0; k < n; ++k) {
+        at(whole[k], Gap(face, c, whole[k]),
+           rule_.weights[k] * (strip.hi - strip.lo) * area_per_xi);
+      }
+      return true;
+    }
+    // Depth-first halving with a fixed stack, each interval with its ends' gaps: 2^-40 of an
+    // element is far below any gap ratio.
+    struct Interval {
+      double a, b, ga, gb;
+    };
+    std::array<Interval, 48> stack;
+    int top = 0;
+    const double m = 0.5 * (strip.lo + strip.hi);
+    stack[top++] = {m, strip.hi, g_mid, g_hi};
+    stack[top++] = {strip.lo, m, g_lo, g_mid};
+    while (top > 0) {
+      const Interval i = stack[--top];
+      const double mid = 0.5 * (i.a + i.b), gm = Gap(face, c, StripPhi(mid));
+      const double lo = std::min({i.ga, gm, i.gb}), hi = std::max({i.ga, gm, i.gb});
+      if (!(lo > 0.0)) return false;
+      if (hi > ratio_ * lo && top + 2 <= static_cast<int>(stack.size())) {
+        stack[top++] = {mid, i.b, gm, i.gb};
+        stack[top++] = {i.a, mid, i.ga, gm};
+        continue;
+      }
+      for (std::size_t k = 0; k < n; ++k) {
+        const Eigen::Vector4d phi = StripPhi(i.a + rule_.points[k] * (i.b - i.a));
+        at(phi, Gap(face, c, phi), rule_.weights[k] * (i.b - i.a) * area_per_xi);
+      }
+    }
+    return true;
+  }
+
+  template <typename AtPoint>
+  bool VisitPlate(const Face& face, const Eigen::Vector4d& c, AtPoint& at) const {
+    const FrameFaces::Plate& plate = geometry_.plates()[face.index];
+    struct Cell {
+      double x0, x1, z0, z1;
+    };
+    // Each halving leaves one cell on the stack: 64 of them reach 2^-32 of a side in each
+    // direction, far below any gap ratio.
+    std::array<Cell, 64> stack;
+    int top = 0;
+    stack[top++] = {plate.x[0], plate.x[1], plate.z[0], plate.z[1]};
+    while (top > 0) {
+      const Cell cell = stack[--top];
+      double low = std::numeric_limits<double>::infinity(), high = 0.0;
+      for (const double x : {cell.x0, cell.x1}) {
+        for (const double z : {cell.z0, cell.z1}) {
+          const double gap = Gap(face, c, PlatePhi(x, z));
+          low = std::min(low, gap);
+          high = std::max(high, gap);
+        }
+      }
+      if (!(low > 0.0 && high < std::numeric_limits<double>::infinity())) return false;
+      if (high > ratio_ * low && top + 2 <= static_cast<int>(stack.size())) {
+        // Across the side along which the gap changes most: c_2 per x, -c_1 per z.
+        if (std::abs(c[2]) * (cell.x1 - cell.x0) >= std::abs(c[1]) * (cell.z1 - cell.z0)) {
+          const double xm = 0.5 * (cell.x0 + cell.x1);
+          stack[top++] = {xm, cell.x1, cell.z0, cell.z1};
+          stack[top++] = {cell.x0, xm, cell.z0, cell.z1};
+        } else {
+          const double zm = 0.5 * (cell.z0 + cell.z1);
+          stack[top++] = {cell.x0, cell.x1, zm, cell.z1};
+          stack[top++] = {cell.x0, cell.x1, cell.z0, zm};
+        }
+        continue;
+      }
+      const double area = (cell.x1 - cell.x0) * (cell.z1 - cell.z0);
+      for (std::size_t i = 0; i < rule_.points.size(); ++i) {
+        for (std::size_t j = 0; j < rule_.points.size(); ++j) {
+          const Eigen::Vector4d phi = PlatePhi(cell.x0 + rule_.points[i] * (cell.x1 - cell.x0),
+                                               cell.z0 + rule_.points[j] * (cell.z1 - cell.z0));
+          at(phi, Gap(face, c, phi), rule_.weights[i] * rule_.weights[j] * area);
+        }
+      }
+    }
+    return true;
+  }
+
+  FrameFaces geometry_;
+  double length_m_;
+  double per_length_m_;  ///< internal length units per metre
+  double ratio_;
+  bool plates_;
+  GaussLegendre rule_;
+  double separation_m_ = 0.0;
+  std::vector<Face> faces_;
+  std::vector<int> first_face_;  ///< element e's faces: [first_face_[e], first_face_[e + 1])
+  /// Each strip's shapes at the Gauss points over all of it, then at its ends and midpoint.
+  std::vector<Eigen::Vector4d> strip_phi_;
+};
+
+}  // namespace cosmems
