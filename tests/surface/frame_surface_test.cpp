@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "force_differences.hpp"
@@ -353,6 +354,51 @@ TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
   EXPECT_NEAR(r[uy] * f, diagonal, 1e-7 * diagonal);
   EXPECT_NEAR(r[tz], -r[tx], 1e-9 * std::abs(r[tz]));
   EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+}
+
+// A state whose gap closes somewhere, or is not finite, is outside the pressure's domain: the
+// force says so (the step is cut), on a member as on a plate, whichever degree of freedom
+// carries the NaN or the infinity; the capacitance of such a state is NaN.
+TEST(FrameGapIntegralTest, AClosedOrNonFiniteGapIsAStatus) {
+  const test::PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const double l = model.units().length, gap = 2e-6;
+  const ElectrostaticPressure pressure{10.0};
+  // Over the plate alone (no strip shares its degrees of freedom), and under everything.
+  FrameGapForce<ElectrostaticPressure> plate_only(model, pressure, {gap, {device.plate}});
+  FrameGapForce<ElectrostaticPressure> everything(model, pressure, FrameGapOptions{gap});
+  const int plate = model.mesh().body_carrier[0];
+  const int beam = model.mesh().nodes[model.mesh().elements[1].to].carrier;  // inside a beam
+  struct Case {
+    FrameGapForce<ElectrostaticPressure>* force;
+    int dof;
+  };
+  const std::vector<Case> cases = {{&plate_only, model.CarrierDof(plate, 1)},
+                                   {&plate_only, model.CarrierDof(plate, 3)},
+                                   {&plate_only, model.CarrierDof(plate, 5)},
+                                   {&everything, model.CarrierDof(beam, 1)},
+                                   {&everything, model.CarrierDof(beam, 5)}};
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  for (const Case& c : cases) {
+    ASSERT_GE(c.dof, 0);
+    for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()}) {
+      Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+      d[c.dof] = bad;
+      Eigen::VectorXd r = Eigen::VectorXd::Zero(model.FreeDofCount());
+      EXPECT_FALSE(c.force->Evaluate(d, r, tangent)) << "dof " << c.dof << " at " << bad;
+      EXPECT_TRUE(std::isnan(c.force->Capacitance(d))) << "dof " << c.dof << " at " << bad;
+    }
+  }
+  for (const Case& c : {cases[0], cases[3]}) {  // through the substrate, then open everywhere
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+    d[c.dof] = -1.01 * gap / l;
+    Eigen::VectorXd r = Eigen::VectorXd::Zero(model.FreeDofCount());
+    EXPECT_FALSE(c.force->Evaluate(d, r, tangent)) << "dof " << c.dof;
+    d[c.dof] = -0.5 * gap / l;
+    EXPECT_TRUE(c.force->Evaluate(d, r, tangent)) << "dof " << c.dof;
+    EXPECT_TRUE(r.allFinite());
+  }
 }
 
 // With Casimir beside it the electrode pulls the plate in sooner: the fold of

@@ -212,6 +212,8 @@ class FrameGapIntegral {
     const double gap = face.gap_m + c.dot(phi) * length_m_;
     return gap < separation_m_ ? separation_m_ : gap;
   }
+  // Whether a gap is open and finite: a closed or non-finite one ends the quadrature.
+  static bool Open(double gap) { return gap > 0.0 && std::isfinite(gap); }
   // The element's coordinate at the fraction p of the strip.
   static double Along(const FrameFaces::Strip& strip, double p) {
     return strip.lo + p * (strip.hi - strip.lo);
@@ -241,8 +243,8 @@ class FrameGapIntegral {
     const Eigen::Vector4d* whole = &strip_phi_[face.index * (n + 3)];
     const double g_lo = Gap(face, c, whole[n]), g_hi = Gap(face, c, whole[n + 2]);
     const double g_mid = Gap(face, c, whole[n + 1]);
+    if (!(Open(g_lo) && Open(g_mid) && Open(g_hi))) return false;
     const double low = std::min({g_lo, g_mid, g_hi}), high = std::max({g_lo, g_mid, g_hi});
-    if (!(low > 0.0)) return false;  // closed, or not finite
     if (high <= ratio_ * low) {
       for (std::size_t k = 0; k < n; ++k) {
         at(whole[k], Gap(face, c, whole[k]),
@@ -263,8 +265,8 @@ class FrameGapIntegral {
     while (top > 0) {
       const Interval i = stack[--top];
       const double mid = 0.5 * (i.a + i.b), gm = Gap(face, c, StripPhi(mid));
+      if (!Open(gm)) return false;
       const double lo = std::min({i.ga, gm, i.gb}), hi = std::max({i.ga, gm, i.gb});
-      if (!(lo > 0.0)) return false;
       if (hi > ratio_ * lo && top + 2 <= static_cast<int>(stack.size())) {
         stack[top++] = {mid, i.b, gm, i.gb};
         stack[top++] = {i.a, mid, i.ga, gm};
@@ -295,11 +297,11 @@ class FrameGapIntegral {
       for (const double x : {cell.x0, cell.x1}) {
         for (const double z : {cell.z0, cell.z1}) {
           const double gap = Gap(face, c, PlatePhi(x, z));
+          if (!Open(gap)) return false;
           low = std::min(low, gap);
           high = std::max(high, gap);
         }
       }
-      if (!(low > 0.0 && high < std::numeric_limits<double>::infinity())) return false;
       if (high > ratio_ * low && top + 2 <= static_cast<int>(stack.size())) {
         // Across the side along which the gap changes most: c_2 per x, -c_1 per z.
         if (std::abs(c[2]) * (cell.x1 - cell.x0) >= std::abs(c[1]) * (cell.z1 - cell.z0)) {
