@@ -20,6 +20,8 @@ packages=(g++ ccache cmake make libeigen3-dev libsuitesparse-dev libgtest-dev li
 # (a virtual X server and Mesa's software renderer).
 packages+=(pkg-config libglfw3-dev libgl-dev libimgui-dev libstb-dev xvfb xauth libgl1-mesa-dri
   libglx-mesa0)
+# The sweep's MPI ranks (Debian's OpenMPI; `mpirun -n N cosmems sweep ...`).
+packages+=(openmpi-bin libopenmpi-dev)
 # libFuzzer comes with clang's runtime libraries; only the fuzzer needs them.
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 # The report plots with gnuplot; only `report` needs it.
@@ -73,8 +75,9 @@ case "${1:-}" in
     # so the library's and Eigen's asserts run; line tables only (-g1), which is all a report's
     # stack needs and compiles in 60 % of -g's time. Left out, each for its reason: the
     # malloc-counting tests (the sanitizer owns malloc), the ThreadSanitizer tests (one
-    # sanitizer a build; they run in `test`) and the viewer's headless run (Mesa's software
-    # renderer, not ours, under LeakSanitizer).
+    # sanitizer a build; they run in `test`), the viewer's headless run (Mesa's software
+    # renderer, not ours, under LeakSanitizer) and the sweep under mpirun (OpenMPI's start-up,
+    # likewise).
     asan_dir=${COSMEMS_ASAN_DIR:-build/asan}
     cmake -S . -B "$asan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
       -DCOSMEMS_SANITIZE=address,undefined,float-cast-overflow \

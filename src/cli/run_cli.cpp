@@ -1,29 +1,22 @@
 #include "run_cli.hpp"
 
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
 #include <memory>
 #include <new>
 #include <stdexcept>
 
-#include "buckling_report.hpp"
+#include "analysis_runner.hpp"
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/netlist_scene.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
-#include "frame_buckling_report.hpp"
-#include "frame_modal_report.hpp"
-#include "frame_pullin_report.hpp"
-#include "frame_release_report.hpp"
-#include "frame_static_report.hpp"
-#include "haptic_report.hpp"
-#include "modal_report.hpp"
-#include "pullin_report.hpp"
-#include "release_report.hpp"
-#include "static_report.hpp"
-#include "transient_report.hpp"
+#include "sweep_runner.hpp"
 
 namespace cosmems {
 namespace {
@@ -48,43 +41,6 @@ std::string OneLine(std::string text) {
   return text;
 }
 
-std::unique_ptr<internal::AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs every analysis.
-  if (IsDevice(scene.structure.kind)) {
-    if (scene.analysis.type == AnalysisType::kHaptic) return internal::HapticReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kPullin)
-      return internal::FramePullInReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kModal) return internal::FrameModalReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kTransient)
-      return internal::TransientReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kBuckling) {
-      return internal::FrameBucklingReport::Run(scene);
-    }
-    if (scene.analysis.type == AnalysisType::kRelease) {
-      return internal::FrameReleaseReport::Run(scene);
-    }
-    return internal::FrameStaticReport::Run(scene);
-  }
-  switch (scene.analysis.type) {
-    case AnalysisType::kStatic:
-      return internal::StaticReport::Run(scene);
-    case AnalysisType::kModal:
-      return internal::ModalReport::Run(scene);
-    case AnalysisType::kTransient:
-      return internal::TransientReport::Run(scene);
-    case AnalysisType::kBuckling:
-      return internal::BucklingReport::Run(scene);
-    case AnalysisType::kPullin:
-      return internal::PullInReport::Run(scene);
-    case AnalysisType::kRelease:
-      return internal::ReleaseReport::Run(scene);
-    case AnalysisType::kHaptic:
-      return internal::HapticReport::Run(scene);
-  }
-  throw std::logic_error(std::string("analysis.type = \"") + ToString(scene.analysis.type) +
-                         "\" passed validation but has no runner");
-}
-
 std::filesystem::path PrepareOutDirectory(const std::string& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -104,7 +60,7 @@ int Run(const RunRequest& request, std::ostream& out) {
   std::filesystem::path directory;
   if (!request.out.empty()) directory = PrepareOutDirectory(request.out);
 
-  const std::unique_ptr<internal::AnalysisReport> report = RunAnalysis(scene);
+  const std::unique_ptr<internal::AnalysisReport> report = internal::RunAnalysis(scene);
   const bool ok = report->header().status == Status::kOk;
   if (ok && !directory.empty()) report->WriteFiles(directory);
   if (request.json) {
@@ -196,6 +152,49 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 
+  internal::SweepRequest sweep_request;
+  std::vector<std::string> varied;
+  std::string shard;
+  CLI::App* sweep = app.add_subcommand(
+      "sweep", "Run a scene over varied keys (a grid, random draws) and summarise the outputs");
+  sweep->add_option("SCENE", sweep_request.scene, "A .toml scene file or an embedded scene")
+      ->required();
+  sweep
+      ->add_option("--vary", varied,
+                   "Vary KEY by SPEC: A:B:N, log:A:B:N, [v1, v2], "
+                   "uniform:A:B, normal:M:S, lognormal:M:S, "
+                   "truncnormal:M:S:LO:HI; repeatable")
+      ->type_name("KEY=SPEC")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  sweep->add_option("--samples", sweep_request.samples, "Draws of the random keys (100)")
+      ->type_name("N");
+  sweep->add_option("--method", sweep_request.method, "monte-carlo (default), lhs or sobol")
+      ->type_name("M");
+  sweep->add_option("--seed", sweep_request.seed, "The sweep's seed (1)")->type_name("S");
+  sweep
+      ->add_option("--spec", sweep_request.specs,
+                   "A condition on an output (pullin_voltage_v>=20); repeatable")
+      ->type_name("EXPR")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  sweep->add_option("--threads", sweep_request.threads, "Workers (one per hardware thread)")
+      ->type_name("T")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--shard", shard, "Run only shard K of N (K from 1)")->type_name("K/N");
+  sweep
+      ->add_option("--out", sweep_request.out,
+                   "Write samples.jsonl, samples.csv and summary.json into DIR; resume there")
+      ->type_name("DIR");
+  sweep->add_flag("--json", sweep_request.json, "Print the summary as one JSON object");
+  sweep->add_option("--set", sweep_request.sets, "Override a key in every sample, as for run")
+      ->type_name("KEY=VALUE")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+
   CLI::App* scenes = app.add_subcommand("scenes", "List the embedded scenes, one line each");
   std::string show_name;
   CLI::App* show = app.add_subcommand("show", "Print an embedded scene as TOML, to edit");
@@ -233,6 +232,14 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (scenes->parsed()) return ListScenes(out);
     if (netlist->parsed()) return PrintNetlist(netlist_request, out);
     if (show->parsed()) return ShowScene(show_name, out);
+    if (sweep->parsed()) {
+      for (const std::string& assignment : varied) {
+        sweep_request.vary.push_back(internal::SweepRequest::SplitVary(assignment));
+      }
+      if (!shard.empty()) sweep_request.SetShard(shard);
+      const bool progress = &err == &std::cerr && isatty(STDERR_FILENO) != 0;
+      return internal::RunSweep(sweep_request, out, err, progress);
+    }
     if (keys->parsed()) {
       out << SceneKeyReference();
       return kSuccess;

@@ -501,9 +501,11 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
 
 Scene ReadScene(const toml::table& root, const KeyOrigins& origins) {
   const TomlFieldReader r(root, origins);
-  r.RejectUnknownKeys(
-      "", {"structure", "material", "materials", "model", "loads", "effects", "analysis", "device"},
-      "table");
+  // [sweep] belongs to `cosmems sweep` (doc/sweeps.md), which reads it; a run ignores it.
+  r.RejectUnknownKeys("",
+                      {"structure", "material", "materials", "model", "loads", "effects",
+                       "analysis", "device", "sweep"},
+                      "table");
   Scene scene;
   scene.structure = ReadStructure(r);
   scene.material = ReadMaterial(r, scene.structure.kind);

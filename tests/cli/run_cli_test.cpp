@@ -475,9 +475,9 @@ TEST(RunCliTest, UsageErrorsAreOneLineWithExitTwo) {
   ExpectContains(InvalidInput({"run", "cantilever", "--bogus"}), "--bogus");
   ExpectContains(InvalidInput({"run", "cantilever", "--set"}), "--set");
   ExpectContains(InvalidInput({"run", "cantilever", "--out", ""}), "DIR must not be empty");
-  EXPECT_EQ(
-      InvalidInput({"frobnicate"}),
-      "cosmems: unknown command \"frobnicate\" (expected run, netlist, scenes, show, keys)\n");
+  EXPECT_EQ(InvalidInput({"frobnicate"}),
+            "cosmems: unknown command \"frobnicate\" (expected run, netlist, sweep, scenes, show, "
+            "keys)\n");
 }
 
 TEST(RunCliTest, UnwritableOutIsInvalidInput) {

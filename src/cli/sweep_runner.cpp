@@ -1,0 +1,298 @@
+#include "sweep_runner.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <fstream>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <thread>
+
+#include "analysis_runner.hpp"
+#include "cli_input_error.hpp"
+#include "cosmems/scene/scene_loader.hpp"
+#include "sweep_condition.hpp"
+#include "sweep_plan.hpp"
+#include "sweep_store.hpp"
+#include "sweep_summary.hpp"
+#if COSMEMS_WITH_MPI
+#include "sweep_mpi.hpp"
+#endif
+#include "text_format.hpp"
+
+namespace cosmems::internal {
+namespace {
+
+constexpr std::int64_t kDefaultDraws = 100;
+constexpr std::uint64_t kDefaultSeed = 1;
+
+// What every sample of the sweep shares: the scene's text is read once (a file changed during
+// the sweep does not change its samples; MPI ranks receive it from rank 0).
+struct Sweep {
+  SweepPlan plan;
+  std::vector<SweepCondition> conditions;
+  std::vector<SceneOverride> sets;
+  std::string scene;  ///< its name or path, as errors and results name it
+  std::string text;
+};
+
+Sweep Prepare(const SweepRequest& request, std::string text) {
+  std::vector<SweepParameter> parameters;
+  std::set<std::string> keys;
+  for (const auto& [key, spec] : request.vary) {
+    if (!keys.insert(key).second) throw CliInputError("--vary " + key + ": varied twice");
+    parameters.emplace_back(key, spec);
+  }
+  if (parameters.empty()) {
+    throw CliInputError(request.scene +
+                        ": nothing to sweep (give --vary KEY=SPEC or a "
+                        "[sweep.vary] table)");
+  }
+  const SweepMethod method = ParseSweepMethod(request.method.value_or("monte-carlo"), "--method");
+  Sweep sweep{SweepPlan(std::move(parameters), method, request.samples.value_or(kDefaultDraws),
+                        request.seed.value_or(kDefaultSeed)),
+              {},
+              {},
+              request.scene,
+              std::move(text)};
+  for (const std::string& spec : request.specs) sweep.conditions.emplace_back(spec);
+  for (const std::string& set : request.sets) sweep.sets.push_back(SceneOverride::Parse(set));
+  return sweep;
+}
+
+std::vector<SceneOverride> Overrides(const Sweep& sweep,
+                                     const std::vector<nlohmann::json>& values) {
+  std::vector<SceneOverride> overrides = sweep.sets;
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    overrides.push_back({sweep.plan.parameters()[j].key(), TomlLiteral(values[j])});
+  }
+  return overrides;
+}
+
+// Every grid value, and each distribution's median, must make a valid scene (the others at
+// their nominal values): an invalid sweep is refused before a sample runs.
+void Validate(const Sweep& sweep) {
+  const std::vector<SweepParameter>& parameters = sweep.plan.parameters();
+  std::vector<nlohmann::json> nominal;
+  for (const SweepParameter& p : parameters) nominal.push_back(p.Nominal());
+  (void)LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, nominal));
+  for (std::size_t j = 0; j < parameters.size(); ++j) {
+    std::vector<nlohmann::json> values = nominal;
+    for (std::size_t v = 1; v < parameters[j].values().size(); ++v) {
+      values[j] = parameters[j].values()[v];
+      (void)LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, values));
+    }
+  }
+}
+
+SweepRow RunSample(const Sweep& sweep, std::int64_t index) {
+  SweepRow row;
+  row.index = index;
+  const std::vector<nlohmann::json> values = sweep.plan.Values(index);
+  for (std::size_t j = 0; j < values.size(); ++j) {
+    row.parameters[sweep.plan.parameters()[j].key()] = values[j];
+  }
+  try {
+    const Scene scene = LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, values));
+    row.result = RunAnalysis(scene)->Json();
+    row.status = row.result.value("status", std::string("no status"));
+  } catch (const std::invalid_argument& error) {  // a drawn value the scene refuses
+    row.status = std::string("invalid: ") + error.what();
+  }
+  return row;
+}
+
+// What sweep.json records: what decides the samples' values (not threads, shards or output).
+nlohmann::ordered_json Description(const Sweep& sweep, const SweepRequest& request) {
+  nlohmann::ordered_json vary = nlohmann::ordered_json::object();
+  for (const SweepParameter& p : sweep.plan.parameters()) vary[p.key()] = p.spec();
+  return {{"scene", request.scene},
+          {"set", request.sets},
+          {"vary", vary},
+          {"method", ToString(sweep.plan.method())},
+          {"samples", sweep.plan.draws()},
+          {"seed", sweep.plan.seed()}};
+}
+
+// Runs `todo` on `workers` threads, each taking the next index as it finishes one (samples near
+// pull-in cost many times more than others), and hands each row to `sink` under one lock.
+template <typename Sink>
+void RunOnThreads(const Sweep& sweep, const std::vector<std::int64_t>& todo, int workers,
+                  Sink&& sink) {
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  std::exception_ptr failure;
+  auto work = [&] {
+    for (std::size_t i; (i = next++) < todo.size();) {
+      try {
+        SweepRow row = RunSample(sweep, todo[i]);
+        const std::lock_guard<std::mutex> hold(lock);
+        sink(std::move(row));
+      } catch (...) {  // out of memory, an unwritable file: the sweep stops
+        const std::lock_guard<std::mutex> hold(lock);
+        if (!failure) failure = std::current_exception();
+        next = todo.size();
+      }
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
+  work();
+  for (std::thread& t : threads) t.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+void PrintSummary(const nlohmann::ordered_json& summary,
+                  const std::vector<SweepCondition>& conditions, std::ostream& out) {
+  out << "sweep: " << summary["samples"].get<std::int64_t>() << " samples, "
+      << summary["failed"].get<std::int64_t>() << " failed, "
+      << Significant(summary["wall_time_s"].get<double>(), 3) << " s on "
+      << summary["workers"].get<int>() << " workers\n";
+  if (summary.contains("yield")) {
+    std::string specs;
+    for (const SweepCondition& c : conditions) specs += (specs.empty() ? "" : ", ") + c.text();
+    out << "yield: " << Significant(100.0 * summary["yield"].get<double>(), 4) << " % (" << specs
+        << ")\n";
+  }
+  for (const auto& [field, s] : summary["outputs"].items()) {
+    out << "  " << field << ": mean " << Scientific(s["mean"].get<double>()) << ", std "
+        << Scientific(s["std"].get<double>(), 3) << ", min " << Scientific(s["min"].get<double>())
+        << ", max " << Scientific(s["max"].get<double>()) << "\n";
+  }
+}
+
+// Runs the samples `todo`, handing each row to `sink` on the calling thread; `workers` is how
+// many run at once.
+struct Executor {
+  int workers = 0;
+  std::function<void(const std::vector<std::int64_t>& todo,
+                     const std::function<void(SweepRow)>& sink)>
+      run;
+};
+
+// The sweep on this process's threads, or on `ranks` when given.
+int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream& err, bool progress,
+        const Executor* ranks) {
+  const auto start = std::chrono::steady_clock::now();
+  request.MergeSceneTable(text, request.scene);
+  const Sweep sweep = Prepare(request, std::move(text));
+  Validate(sweep);
+
+  std::optional<SweepStore> store;
+  if (!request.out.empty()) store.emplace(request.out, Description(sweep, request));
+  std::vector<SweepRow> rows = store ? store->previous() : std::vector<SweepRow>{};
+  std::set<std::int64_t> done;
+  for (const SweepRow& row : rows) done.insert(row.index);
+  std::vector<std::int64_t> todo;
+  for (std::int64_t i = request.shard - 1; i < sweep.plan.Count(); i += request.shards) {
+    if (done.count(i) == 0) todo.push_back(i);
+  }
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int workers = ranks ? ranks->workers
+                            : static_cast<int>(std::clamp<std::int64_t>(
+                                  request.threads > 0 ? request.threads : hardware, 1,
+                                  std::max<std::size_t>(todo.size(), 1)));
+
+  std::size_t finished = 0, failed = 0;
+  auto sink = [&](SweepRow row) {
+    if (store) store->Append(row);
+    failed += row.ok() ? 0 : 1;
+    rows.push_back(std::move(row));
+    if (progress) {
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      err << "\rsweep: " << ++finished << "/" << todo.size() << " samples, " << failed
+          << " failed, " << Significant(elapsed, 3) << " s" << std::flush;
+    }
+  };
+  if (ranks) {
+    ranks->run(todo, sink);
+  } else {
+    RunOnThreads(sweep, todo, workers, sink);
+  }
+  if (progress && !todo.empty()) err << "\n";
+
+  std::sort(rows.begin(), rows.end(),
+            [](const SweepRow& a, const SweepRow& b) { return a.index < b.index; });
+  nlohmann::ordered_json summary = SummarizeSweep(rows, sweep.conditions);
+  summary["wall_time_s"] =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary["workers"] = workers;
+  if (store) {
+    std::ofstream file(store->directory() / "summary.json");
+    file << summary.dump(2) << "\n";
+    if (!file) throw CliInputError("--out " + request.out + ": cannot write summary.json");
+    WriteSweepCsv(store->directory() / "samples.csv", rows);
+  }
+  if (request.json) {
+    out << summary.dump(2) << "\n";
+  } else {
+    PrintSummary(summary, sweep.conditions, out);
+    if (store) out << "files written to " << store->directory().string() << "\n";
+  }
+  return 0;
+}
+
+#if COSMEMS_WITH_MPI
+// Rank 0 runs the sweep, the others its samples. Every rank has the command line; the scene's
+// text comes from rank 0, so no other rank needs its file. When rank 0 refuses the sweep (or
+// fails) it stops the others before it reports why; they print nothing.
+int RunOnRanks(const SweepRequest& request, std::ostream& out, std::ostream& err, bool progress,
+               const MpiWorld& world) {
+  if (world.rank() == 0) {
+    std::string text;
+    try {
+      text = SceneText(request.scene);
+    } catch (...) {
+      world.Share(std::nullopt);
+      throw;
+    }
+    world.Share(text);
+    bool stopped = false;
+    Executor ranks{world.size() - 1, [&](const std::vector<std::int64_t>& todo,
+                                         const std::function<void(SweepRow)>& sink) {
+                     stopped = true;
+                     world.Dispatch(todo, [&](const std::string& row) {
+                       sink(SweepRow::FromJson(nlohmann::ordered_json::parse(row)));
+                     });
+                   }};
+    try {
+      return Run(request, std::move(text), out, err, progress, &ranks);
+    } catch (...) {
+      if (!stopped) world.Dispatch({}, [](const std::string&) {});
+      throw;
+    }
+  }
+  std::optional<std::string> text = world.Share(std::nullopt);
+  if (!text) return 0;
+  std::optional<Sweep> sweep;
+  try {
+    SweepRequest copy = request;
+    copy.MergeSceneTable(*text, request.scene);
+    sweep.emplace(Prepare(copy, std::move(*text)));
+  } catch (const std::exception&) {
+    // Rank 0 fails alike, reports it and hands out no sample.
+  }
+  world.Serve([&](std::int64_t index) {
+    return sweep ? RunSample(*sweep, index).Json().dump() : std::string();
+  });
+  return 0;
+}
+#endif
+
+}  // namespace
+
+int RunSweep(const SweepRequest& request, std::ostream& out, std::ostream& err, bool progress) {
+#if COSMEMS_WITH_MPI
+  if (LaunchedByMpi()) {
+    const MpiWorld world;
+    if (world.size() > 1) return RunOnRanks(request, out, err, progress, world);
+  }
+#endif
+  return Run(request, SceneText(request.scene), out, err, progress, nullptr);
+}
+
+}  // namespace cosmems::internal

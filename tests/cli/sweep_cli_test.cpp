@@ -1,0 +1,313 @@
+// `cosmems sweep`: outputs against closed forms across a sweep, the same rows on any number of
+// workers and shards, resume, refusal before any sample, and failures as rows.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <thread>
+
+#include "cli_test_support.hpp"
+
+namespace cosmems::testing {
+namespace sweep_cli_test {
+
+using Json = nlohmann::json;
+
+// The rows of samples.jsonl by index, without the fields that time the run (they differ from
+// run to run, the physics does not).
+std::map<std::int64_t, Json> Rows(const std::filesystem::path& directory) {
+  std::map<std::int64_t, Json> rows;
+  for (const std::string& line : ReadLines(directory / "samples.jsonl")) {
+    Json row = Json::parse(line);
+    if (row["result"].is_object()) {
+      for (const char* timing : {"wall_time_s", "step_time_us", "tick_time_us"}) {
+        row["result"].erase(timing);
+      }
+    }
+    const auto index = row["index"].get<std::int64_t>();
+    EXPECT_TRUE(rows.emplace(index, row).second) << "index " << index << " twice";
+  }
+  return rows;
+}
+
+Json Sweep(std::vector<std::string> args) {
+  args.insert(args.begin(), "sweep");
+  args.push_back("--json");
+  const CliOutcome outcome = Cli(args);
+  EXPECT_EQ(outcome.code, 0) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  return Json::parse(outcome.out);
+}
+
+// Euler-Bernoulli: the tip deflection P L^3 / (3 E I) of the `cantilever` scene at each length
+// of a grid (the Hermite element is exact for a tip load: 1e-9 is round-off of the solve).
+TEST(SweepCliTest, TipDeflectionFollowsLengthCubedOverAGrid) {
+  const TempDirectory dir;
+  const Json summary = Sweep({"cantilever", "--vary", "structure.length=100e-6:300e-6:5", "--spec",
+                              "max_deflection<=1.5e-7", "--out", dir.path().string()});
+  EXPECT_EQ(summary["samples"], 5);
+  EXPECT_EQ(summary["failed"], 0);
+  const double ei = 169e9 * 20e-6 * std::pow(2e-6, 3) / 12.0;
+  int within = 0;
+  for (const auto& [index, row] : Rows(dir.path())) {
+    const double length = row["parameters"]["structure.length"].get<double>();
+    EXPECT_NEAR(length, 100e-6 + 50e-6 * index, 1e-18);
+    const double expected = 1e-7 * std::pow(length, 3) / (3.0 * ei);
+    const double uy = row["result"]["tip_displacement"][1].get<double>();
+    EXPECT_NEAR(-uy / expected, 1.0, 1e-9) << length;
+    within += expected <= 1.5e-7 ? 1 : 0;
+  }
+  // The yield: the lengths whose deflection meets the spec (100, 150 and 200 um).
+  EXPECT_EQ(within, 3);
+  EXPECT_DOUBLE_EQ(summary["yield"].get<double>(), 0.6);
+  // d(max_deflection)/dL by least squares over the grid: the chord slope of L^3 fitted by a
+  // line, (sum (L - mean)(y)) / sum (L - mean)^2, computed here from the closed form.
+  double mean = 200e-6, num = 0.0, den = 0.0;
+  for (int i = 0; i < 5; ++i) {
+    const double l = 100e-6 + 50e-6 * i;
+    num += (l - mean) * 1e-7 * l * l * l / (3.0 * ei);
+    den += (l - mean) * (l - mean);
+  }
+  EXPECT_NEAR(
+      summary["sensitivities"]["max_deflection"]["structure.length"].get<double>() / (num / den),
+      1.0, 1e-8);
+  EXPECT_EQ(ReadLines(dir.path() / "samples.csv").size(), 6u);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
+}
+
+// f1 = (1.8751^2 / 2 pi) sqrt(E I / (rho A)) / L^2 is proportional to the thickness t, so a
+// normal spread of t gives f1 the mean c mu_t and standard deviation c sigma_t. The sample's
+// mean and spread must match within four of their standard errors (n = 400 Monte Carlo draws).
+TEST(SweepCliTest, MonteCarloSpreadOfTheFirstFrequencyFollowsTheThickness) {
+  const double mu = 2e-6, sigma = 0.04e-6;
+  const int n = 400;
+  const Json summary =
+      Sweep({"cantilever-modal", "--vary", "structure.thickness=normal:2e-6:0.04e-6", "--samples",
+             std::to_string(n), "--seed", "7", "--set", "analysis.count=1"});
+  ASSERT_EQ(summary["failed"], 0);
+  const double beta = 1.875104068711961, length = 200e-6;
+  const double c = beta * beta / (2.0 * 3.14159265358979323846 * length * length) *
+                   std::sqrt(169e9 / (12.0 * 2330.0));  // f1 = c t
+  const Json& f1 = summary["outputs"]["frequencies_hz[0]"];
+  EXPECT_NEAR(f1["mean"].get<double>(), c * mu, 4.0 * c * sigma / std::sqrt(n));
+  EXPECT_NEAR(f1["std"].get<double>(), c * sigma, 4.0 * c * sigma / std::sqrt(2.0 * (n - 1)));
+  // The sensitivity is the slope c itself, to 1e-3: the model's f1 departs from c t by its
+  // discretisation error and by rotary inertia, of order (t / L)^2 = 1e-4.
+  EXPECT_NEAR(
+      summary["sensitivities"]["frequencies_hz[0]"]["structure.thickness"].get<double>() / c, 1.0,
+      1e-3);
+}
+
+// The rows are the same, row for row by index, on 1 or 2 threads and as two shards merged.
+TEST(SweepCliTest, ThreadsAndShardsGiveTheSameRows) {
+  const TempDirectory one("_one"), two("_two"), shards("_shards");
+  const std::vector<std::string> sweep = {"cantilever",
+                                          "--vary",
+                                          "structure.length=uniform:150e-6:250e-6",
+                                          "--vary",
+                                          "structure.thickness=[1.5e-6, 2e-6]",
+                                          "--samples",
+                                          "6",
+                                          "--method",
+                                          "lhs"};
+  auto with = [&](std::vector<std::string> more) {
+    std::vector<std::string> args = sweep;
+    args.insert(args.end(), more.begin(), more.end());
+    return Sweep(args);
+  };
+  with({"--threads", "1", "--out", one.path().string()});
+  with({"--threads", "2", "--out", two.path().string()});
+  EXPECT_EQ(with({"--shard", "1/2", "--out", shards.path().string()})["samples"], 6);
+  const Json merged = with({"--shard", "2/2", "--out", shards.path().string()});
+  EXPECT_EQ(merged["samples"], 12);
+  const std::map<std::int64_t, Json> reference = Rows(one.path());
+  ASSERT_EQ(reference.size(), 12u);
+  EXPECT_EQ(Rows(two.path()), reference);
+  EXPECT_EQ(Rows(shards.path()), reference);
+}
+
+// A sweep killed midway resumes from its folder: the finished rows stay as they were (their
+// timings too: they were not run again), the rest are run, no index twice. Each sample (a
+// 1000-element modal analysis, about 25 ms) outlasts the 5 ms polls many times over, so the
+// kill lands while samples remain.
+TEST(SweepCliTest, AKilledSweepResumesWithoutRedoingOrDuplicatingRows) {
+  const TempDirectory dir;
+  const std::string out = dir.path().string();
+  const std::vector<std::string> args = {COSMEMS_BINARY,
+                                         "sweep",
+                                         "cantilever-modal",
+                                         "--vary",
+                                         "model.elements=1000:1190:20",
+                                         "--threads",
+                                         "1",
+                                         "--out",
+                                         out};
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    freopen("/dev/null", "w", stdout);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  // Killed once three samples are written (unless it ended first: then the test fails).
+  int status = 0;
+  bool ended = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (ReadLines(dir.path() / "samples.jsonl").size() < 3 &&
+         std::chrono::steady_clock::now() < deadline && !ended) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ended = waitpid(child, &status, WNOHANG) == child;
+  }
+  if (!ended) {
+    kill(child, SIGKILL);
+    waitpid(child, &status, 0);
+  }
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep ended before it was killed, status " << status;
+  // As if the kill had cut the next row short.
+  std::ofstream(dir.path() / "samples.jsonl", std::ios::app) << "{\"index\": 19, \"param";
+  std::map<std::int64_t, Json> before;
+  for (const std::string& line : ReadLines(dir.path() / "samples.jsonl")) {
+    if (line.back() == '}') {
+      const Json row = Json::parse(line);
+      before.emplace(row["index"].get<std::int64_t>(), row);
+    }
+  }
+  ASSERT_GE(before.size(), 3u);
+  ASSERT_LT(before.size(), 20u);
+
+  const Json summary =
+      Sweep({"cantilever-modal", "--vary", "model.elements=1000:1190:20", "--out", out});
+  EXPECT_EQ(summary["samples"], 20);
+  std::set<std::int64_t> indices;
+  for (const std::string& line : ReadLines(dir.path() / "samples.jsonl")) {
+    const Json row = Json::parse(line);  // every line whole
+    EXPECT_TRUE(indices.insert(row["index"].get<std::int64_t>()).second);
+    const auto kept = before.find(row["index"].get<std::int64_t>());
+    if (kept != before.end()) {
+      EXPECT_EQ(row, kept->second);
+    }
+  }
+  EXPECT_EQ(indices.size(), 20u);
+  // Another sweep in the same folder is refused, not mixed in.
+  ExpectContains(
+      InvalidInput({"sweep", "cantilever-modal", "--vary", "model.elements=20:40:2", "--out", out}),
+      "holds another sweep");
+}
+
+TEST(SweepCliTest, AnInvalidSweepIsRefusedBeforeAnySampleRuns) {
+  const TempDirectory dir;
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.lenght=1e-4:2e-4:3",
+                               "--out", dir.path().string()}),
+                 "structure.lenght");
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "samples.jsonl"));
+  // The last grid value is the bad one: every value is checked first.
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "model.elements=[8, 16, 0]"}),
+                 "model.elements");
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.length=normal:1e-4"}),
+                 "--vary structure.length=normal:1e-4");
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.length=1e-4:2e-4:3",
+                               "--spec", "max_deflection=>1"}),
+                 "--spec max_deflection=>1");
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.length=1e-4:2e-4:3",
+                               "--shard", "3/2"}),
+                 "--shard 3/2");
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.length=1e-4:2e-4:3",
+                               "--method", "halton"}),
+                 "halton");
+  ExpectContains(InvalidInput({"sweep", "cantilever"}), "nothing to sweep");
+}
+
+// A drawn value the scene refuses (a negative length) is a row with its status; the sweep
+// runs the others.
+TEST(SweepCliTest, ASampleTheSceneRefusesIsARowAndTheSweepGoesOn) {
+  const TempDirectory dir;
+  const Json summary = Sweep({"cantilever", "--vary", "structure.length=normal:50e-6:60e-6",
+                              "--samples", "20", "--out", dir.path().string()});
+  int invalid = 0;
+  for (const auto& [index, row] : Rows(dir.path())) {
+    const std::string status = row["status"];
+    if (status == "ok") {
+      EXPECT_GT(row["parameters"]["structure.length"].get<double>(), 0.0);
+    } else {
+      ++invalid;
+      ExpectContains(status, "structure.length");
+      EXPECT_TRUE(row["result"].is_null());
+    }
+  }
+  EXPECT_GT(invalid, 0);
+  EXPECT_LT(invalid, 20);
+  EXPECT_EQ(summary["failed"], invalid);
+  EXPECT_EQ(summary["samples"], 20);
+}
+
+// A scene's [sweep] table is the sweep's default; `run` ignores it.
+TEST(SweepCliTest, ASceneCarriesItsSweep) {
+  const TempDirectory dir;
+  const std::filesystem::path scene = dir.path() / "swept.toml";
+  const CliOutcome shown = Cli({"show", "cantilever"});
+  WriteFile(scene, shown.out +
+                       "\n[sweep]\nmethod = \"sobol\"\nsamples = 4\nseed = 3\n"
+                       "specs = [\"max_deflection<=1.5e-7\"]\n"
+                       "[sweep.vary]\n\"structure.length\" = \"uniform:150e-6:250e-6\"\n");
+  const Json summary = Sweep({scene.string()});
+  EXPECT_EQ(summary["samples"], 4);
+  EXPECT_TRUE(summary.contains("yield"));
+  // The command line replaces the table's spec of a key and its sample count.
+  const Json replaced =
+      Sweep({scene.string(), "--samples", "2", "--vary", "structure.length=uniform:1e-4:2e-4"});
+  EXPECT_EQ(replaced["samples"], 2);
+  EXPECT_LE(replaced["outputs"]["max_deflection"]["max"].get<double>(), 1.2e-7);
+  EXPECT_EQ(RunJson({scene.string()})["status"], "ok");
+  WriteFile(scene, shown.out + "\n[sweep]\nsamples = \"many\"\n");
+  ExpectContains(InvalidInput({"sweep", scene.string()}), "sweep.samples");
+}
+
+#ifdef COSMEMS_MPIEXEC
+// mpirun with 3 ranks (rank 0 dispatching to two) gives the threaded run's rows; an invalid
+// sweep fails on every rank with the exit status 2 and names its key. OpenMPI refuses root and
+// more ranks than cores unless told (the CI machine: root, 2 cores).
+std::string TextOf(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+int Mpirun(const std::string& args, const std::filesystem::path& err) {
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  const std::string command = std::string(COSMEMS_MPIEXEC) + " -n 3 " + COSMEMS_BINARY + " sweep " +
+                              args + " > /dev/null 2> " + err.string();
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(SweepCliTest, MpiRanksGiveTheThreadedRows) {
+  const TempDirectory threads("_threads"), ranks("_ranks");
+  const std::string sweep =
+      "cantilever-modal --vary structure.length=uniform:150e-6:250e-6 --vary "
+      "model.elements=[10,20] --samples 5 --method sobol";
+  Sweep({"cantilever-modal", "--vary", "structure.length=uniform:150e-6:250e-6", "--vary",
+         "model.elements=[10,20]", "--samples", "5", "--method", "sobol", "--out",
+         threads.path().string()});
+  const std::filesystem::path err = ranks.path() / "err.txt";
+  ASSERT_EQ(Mpirun(sweep + " --out " + (ranks.path() / "out").string(), err), 0) << TextOf(err);
+  const Json summary = Json::parse(std::ifstream(ranks.path() / "out" / "summary.json"));
+  EXPECT_EQ(summary["workers"], 2);
+  EXPECT_EQ(summary["samples"], 10);
+  EXPECT_EQ(Rows(ranks.path() / "out"), Rows(threads.path()));
+  EXPECT_EQ(Mpirun("cantilever --vary structure.lenght=1e-4:2e-4:3", err), 2);
+  ExpectContains(TextOf(err), "structure.lenght");
+}
+#endif
+
+}  // namespace sweep_cli_test
+}  // namespace cosmems::testing
