@@ -24,8 +24,8 @@ packages+=(pkg-config libglfw3-dev libgl-dev libimgui-dev libstb-dev xvfb xauth 
 packages+=(openmpi-bin libopenmpi-dev)
 # libFuzzer comes with clang's runtime libraries; only the fuzzer needs them.
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
-# The report plots with gnuplot; only `report` needs it.
-if [ "${1:-}" = report ]; then packages+=(gnuplot-nox); fi
+# The sweeps' plots and the accuracy report's are drawn by gnuplot.
+packages+=(gnuplot-nox)
 # The API reference needs Doxygen; only `docs` does.
 if [ "${1:-}" = docs ]; then packages+=(doxygen); fi
 missing=()

@@ -180,6 +180,14 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       ->expected(1)
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  sweep
+      ->add_option("--plot", sweep_request.plots,
+                   "An output to plot into --out (the specs' fields, else the analysis's "
+                   "first); repeatable")
+      ->type_name("FIELD")
+      ->expected(1)
+      ->allow_extra_args(false)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   sweep->add_option("--threads", sweep_request.threads, "Workers (one per hardware thread)")
       ->type_name("T")
       ->check(CLI::PositiveNumber);

@@ -15,6 +15,7 @@ class SweepCondition {
 
   const std::string& text() const { return text_; }
   const std::string& field() const { return field_; }
+  double bound() const { return bound_; }
   /// False when the result lacks the field or it is not a number (a failed sample's).
   bool Met(const nlohmann::ordered_json& result) const;
 

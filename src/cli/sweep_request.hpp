@@ -16,6 +16,7 @@ struct SweepRequest {
   std::vector<std::string> sets;  ///< --set KEY=VALUE, applied to every sample
   std::vector<std::pair<std::string, std::string>> vary;  ///< KEY, SPEC in order
   std::vector<std::string> specs;
+  std::vector<std::string> plots;  ///< --plot FIELD (none: DefaultPlotFields)
   std::optional<std::string> method;
   std::optional<std::int64_t> samples;
   std::optional<std::uint64_t> seed;

@@ -16,6 +16,7 @@
 #include "cosmems/scene/scene_loader.hpp"
 #include "sweep_condition.hpp"
 #include "sweep_plan.hpp"
+#include "sweep_plots.hpp"
 #include "sweep_store.hpp"
 #include "sweep_summary.hpp"
 #if COSMEMS_WITH_MPI
@@ -164,6 +165,23 @@ void PrintSummary(const nlohmann::ordered_json& summary,
   }
 }
 
+// The plots of a sweep: the fields asked (or the default ones) over its numeric grid keys, or
+// as histograms when it draws keys.
+SweepPlotRequest PlotRequest(const Sweep& sweep, const SweepRequest& request,
+                             const std::vector<SweepRow>& rows) {
+  SweepPlotRequest plots;
+  plots.fields = request.plots.empty() ? DefaultPlotFields(rows, sweep.conditions) : request.plots;
+  plots.conditions = sweep.conditions;
+  for (const SweepParameter& p : sweep.plan.parameters()) {
+    plots.random = plots.random || !p.IsGrid();
+    const bool numeric =
+        p.IsGrid() && std::all_of(p.values().begin(), p.values().end(),
+                                  [](const nlohmann::json& v) { return v.is_number(); });
+    if (numeric) plots.grid_keys.push_back(p.key());
+  }
+  return plots;
+}
+
 // Runs the samples `todo`, handing each row to `sink` on the calling thread; `workers` is how
 // many run at once.
 struct Executor {
@@ -226,6 +244,7 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
     file << summary.dump(2) << "\n";
     if (!file) throw CliInputError("--out " + request.out + ": cannot write summary.json");
     WriteSweepCsv(store->directory() / "samples.csv", rows);
+    (void)WriteSweepPlots(store->directory(), rows, PlotRequest(sweep, request, rows));
   }
   if (request.json) {
     out << summary.dump(2) << "\n";

@@ -21,8 +21,9 @@ double Quantile(const std::vector<double>& sorted, double p) {
 
 nlohmann::ordered_json Statistics(std::vector<double> values) {
   const double n = static_cast<double>(values.size());
-  double mean = 0.0;
-  for (const double x : values) mean += x / n;
+  double sum = 0.0;
+  for (const double x : values) sum += x;
+  const double mean = sum / n;  // a constant output's mean is that constant, its std 0
   double squares = 0.0;
   for (const double x : values) squares += (x - mean) * (x - mean);
   std::sort(values.begin(), values.end());

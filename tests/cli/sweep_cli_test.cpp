@@ -19,6 +19,17 @@ namespace sweep_cli_test {
 
 using Json = nlohmann::json;
 
+std::string TextOf(const std::filesystem::path& path) {
+  std::ifstream file(path);
+  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+}
+
+// A PNG drawn by gnuplot, which the set-up installs: its signature.
+void ExpectPng(const std::filesystem::path& path) {
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  EXPECT_EQ(TextOf(path).substr(1, 3), "PNG");
+}
+
 // The rows of samples.jsonl by index, without the fields that time the run (they differ from
 // run to run, the physics does not).
 std::map<std::int64_t, Json> Rows(const std::filesystem::path& directory) {
@@ -79,6 +90,27 @@ TEST(SweepCliTest, TipDeflectionFollowsLengthCubedOverAGrid) {
       1.0, 1e-8);
   EXPECT_EQ(ReadLines(dir.path() / "samples.csv").size(), 6u);
   EXPECT_TRUE(std::filesystem::exists(dir.path() / "summary.json"));
+  // The curve of the spec's field over the length, with the bound's line.
+  EXPECT_EQ(ReadLines(dir.path() / "plot_max_deflection.dat").size(), 5u);
+  ExpectContains(TextOf(dir.path() / "plot_max_deflection.gp"), "first 1.5e-07");
+  ExpectPng(dir.path() / "plot_max_deflection.png");
+}
+
+// Two grid keys make a map, drawn keys a histogram with the spec's bound; --plot picks fields.
+TEST(SweepCliTest, PlotsAMapOrAHistogram) {
+  const TempDirectory map("_map"), histogram("_histogram");
+  Sweep({"cantilever", "--vary", "structure.length=100e-6:300e-6:3", "--vary",
+         "structure.thickness=[1.5e-6, 2e-6]", "--plot", "max_stress_pa", "--out",
+         map.path().string()});
+  // Three scans of the first key, two points each, a blank line between scans.
+  EXPECT_EQ(ReadLines(map.path() / "plot_max_stress_pa.dat").size(), 8u);
+  ExpectContains(TextOf(map.path() / "plot_max_stress_pa.gp"), "with pm3d");
+  ExpectPng(map.path() / "plot_max_stress_pa.png");
+  Sweep({"cantilever-modal", "--vary", "structure.thickness=normal:2e-6:0.05e-6", "--samples", "40",
+         "--spec", "frequencies_hz[0]<70000", "--out", histogram.path().string()});
+  EXPECT_EQ(ReadLines(histogram.path() / "plot_frequencies_hz_0.dat").size(), 40u);
+  ExpectContains(TextOf(histogram.path() / "plot_frequencies_hz_0.gp"), "set arrow from 70000,");
+  ExpectPng(histogram.path() / "plot_frequencies_hz_0.png");
 }
 
 // f1 = (1.8751^2 / 2 pi) sqrt(E I / (rho A)) / L^2 is proportional to the thickness t, so a
@@ -275,11 +307,6 @@ TEST(SweepCliTest, ASceneCarriesItsSweep) {
 // mpirun with 3 ranks (rank 0 dispatching to two) gives the threaded run's rows; an invalid
 // sweep fails on every rank with the exit status 2 and names its key. OpenMPI refuses root and
 // more ranks than cores unless told (the CI machine: root, 2 cores).
-std::string TextOf(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  return std::string((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-}
-
 int Mpirun(const std::string& args, const std::filesystem::path& err) {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
