@@ -113,6 +113,23 @@ TEST(SweepCliTest, PlotsAMapOrAHistogram) {
   ExpectPng(histogram.path() / "plot_frequencies_hz_0.png");
 }
 
+// A parametric device's design key varies like any other: the folded-flexure's shuttle moves
+// F / k with k = 24 E I / L^3 over a grid of beam lengths (1e-9: the guided beams' Hermite
+// elements are exact for end loads).
+TEST(SweepCliTest, ADevicesDesignParameterVaries) {
+  const TempDirectory dir;
+  Sweep({"folded-flexure", "--vary", "structure.beam_length=80e-6:120e-6:3", "--out",
+         dir.path().string()});
+  const double ei = 160e9 * 2e-6 * std::pow(2e-6, 3) / 12.0;
+  const auto rows = Rows(dir.path());
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& [index, row] : rows) {
+    const double length = row["parameters"]["structure.beam_length"].get<double>();
+    const double x = row["result"]["bodies"]["shuttle"]["displacement"][0].get<double>();
+    EXPECT_NEAR(x / (1e-6 * std::pow(length, 3) / (24.0 * ei)), 1.0, 1e-9) << length;
+  }
+}
+
 // f1 = (1.8751^2 / 2 pi) sqrt(E I / (rho A)) / L^2 is proportional to the thickness t, so a
 // normal spread of t gives f1 the mean c mu_t and standard deviation c sigma_t. The sample's
 // mean and spread must match within four of their standard errors (n = 400 Monte Carlo draws).
