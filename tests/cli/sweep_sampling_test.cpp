@@ -12,6 +12,7 @@
 #include "sweep_condition.hpp"
 #include "sweep_parameter.hpp"
 #include "sweep_plan.hpp"
+#include "sweep_summary.hpp"
 
 namespace cosmems::internal {
 namespace sweep_sampling_test {
@@ -206,6 +207,43 @@ TEST(SweepConditionTest, ReadsFieldOperatorAndBound) {
   for (const char* bad : {"pullin_voltage_v", ">=20", "x>=", "x>=abc", "x=>3"}) {
     EXPECT_THROW(SweepCondition{bad}, CliInputError) << bad;
   }
+}
+
+// The summary of 101 samples x = 1..101 (y = 3 + 2x - 5b, b alternating 0 and 1) and one
+// failed sample: statistics by hand (variance n (n + 1) / 12 with n = 101, type-7 quantiles
+// 1 + p (n - 1)), the yield over all 102 samples, and the exact plane.
+TEST(SweepSummaryTest, StatisticsYieldAndSensitivities) {
+  std::vector<SweepRow> rows;
+  for (int i = 1; i <= 101; ++i) {
+    SweepRow row;
+    row.index = i;
+    row.status = "ok";
+    row.parameters = {{"a", i}, {"b", i % 2}, {"name", "same"}};
+    row.result = {{"x", static_cast<double>(i)}, {"y", 3.0 + 2.0 * i - 5.0 * (i % 2)}};
+    rows.push_back(row);
+  }
+  SweepRow failed;
+  failed.status = "invalid: structure.length = -1";
+  failed.parameters = {{"a", 0}, {"b", 0}, {"name", "same"}};
+  rows.push_back(failed);
+  const nlohmann::ordered_json summary = SummarizeSweep(rows, {SweepCondition("x>=91")});
+  EXPECT_EQ(summary["samples"], 102);
+  EXPECT_EQ(summary["failed"], 1);
+  EXPECT_DOUBLE_EQ(summary["yield"].get<double>(), 11.0 / 102.0);
+  const auto& x = summary["outputs"]["x"];
+  EXPECT_DOUBLE_EQ(x["mean"].get<double>(), 51.0);
+  EXPECT_NEAR(x["std"].get<double>(), std::sqrt(101.0 * 102.0 / 12.0), 1e-12);
+  EXPECT_EQ(x["min"].get<double>(), 1.0);
+  EXPECT_EQ(x["max"].get<double>(), 101.0);
+  const std::pair<const char*, double> quantiles[] = {
+      {"p01", 2.0}, {"p05", 6.0}, {"p50", 51.0}, {"p95", 96.0}, {"p99", 100.0}};
+  for (const auto& [name, value] : quantiles) {
+    EXPECT_NEAR(x["quantiles"][name].get<double>(), value, 1e-12) << name;
+  }
+  // The plane y = 3 + 2 a - 5 b through the samples that ran; "name" does not vary.
+  EXPECT_NEAR(summary["sensitivities"]["y"]["a"].get<double>(), 2.0, 1e-12);
+  EXPECT_NEAR(summary["sensitivities"]["y"]["b"].get<double>(), -5.0, 1e-12);
+  EXPECT_FALSE(summary["sensitivities"]["y"].contains("name"));
 }
 
 }  // namespace sweep_sampling_test
