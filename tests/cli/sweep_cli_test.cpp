@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "cli_test_support.hpp"
+#include "sweep_runner.hpp"
 
 namespace cosmems::testing {
 namespace sweep_cli_test {
@@ -296,6 +297,20 @@ TEST(SweepCliTest, ASampleTheSceneRefusesIsARowAndTheSweepGoesOn) {
   EXPECT_LT(invalid, 20);
   EXPECT_EQ(summary["failed"], invalid);
   EXPECT_EQ(summary["samples"], 20);
+}
+
+// On a terminal a progress line counts the samples as they finish, each overwriting the last.
+TEST(SweepCliTest, DrawsAProgressLine) {
+  internal::SweepRequest request;
+  request.scene = "cantilever";
+  request.vary = {{"structure.length", "100e-6:300e-6:3"}};
+  request.threads = 1;
+  std::ostringstream out, err;
+  ASSERT_EQ(internal::RunSweep(request, out, err, true), 0);
+  ExpectContains(err.str(), "\rsweep: 1/3 samples, 0 failed, ");
+  ExpectContains(err.str(), "\rsweep: 3/3 samples, 0 failed, ");
+  EXPECT_EQ(err.str().back(), '\n');
+  ExpectContains(out.str(), "sweep: 3 samples, 0 failed");
 }
 
 // A scene's [sweep] table is the sweep's default; `run` ignores it.
