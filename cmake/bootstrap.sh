@@ -2,6 +2,8 @@
 # One-step set-up and entry points on a fresh Debian 12 machine:
 #   bash cmake/bootstrap.sh run [ARGS...]   build, then run the default scene (cosmems run cantilever-haptic)
 #   bash cmake/bootstrap.sh test            build, then run the whole test suite with CTest
+#   bash cmake/bootstrap.sh python [ARGS...]  build the Python module, then run Debian's python3
+#                                     with it on the path (python -c "import cosmems")
 #   bash cmake/bootstrap.sh bench [NAME [ARGS...]]  build with the benchmarks on, then run one
 #   bash cmake/bootstrap.sh sanitize        the test suite under AddressSanitizer + UBSan, asserts on
 #   bash cmake/bootstrap.sh fuzz [SECONDS]  fuzz the scene reader and the trajectory reader (clang)
@@ -26,6 +28,9 @@ packages+=(openmpi-bin libopenmpi-dev)
 if [ "${1:-}" = fuzz ]; then packages+=(clang libclang-rt-14-dev); fi
 # The sweeps' plots and the accuracy report's are drawn by gnuplot.
 packages+=(gnuplot-nox)
+# The Python module (pybind11) and its tests and example: Debian's interpreter with numpy, scipy,
+# pytest and matplotlib.
+packages+=(python3-dev pybind11-dev python3-numpy python3-scipy python3-pytest python3-matplotlib)
 # The API reference needs Doxygen; only `docs` does.
 if [ "${1:-}" = docs ]; then packages+=(doxygen); fi
 missing=()
@@ -58,6 +63,12 @@ case "${1:-}" in
     configure OFF
     cmake --build "$build_dir" -j"$jobs" --target cosmems
     exec "$build_dir/src/cli/cosmems" run cantilever-haptic "$@" ;;
+  python)
+    # Debian's interpreter with the built package on its path: python -c "import cosmems".
+    shift
+    configure OFF
+    cmake --build "$build_dir" -j"$jobs" --target cosmems_python cosmems
+    PYTHONPATH="$(cd "$build_dir" && pwd)/python${PYTHONPATH:+:$PYTHONPATH}" exec /usr/bin/python3 "$@" ;;
   test)
     configure OFF
     cmake --build "$build_dir" -j"$jobs"
@@ -126,6 +137,6 @@ case "${1:-}" in
     configure OFF
     cmake --build "$build_dir" --target cosmems_doxygen
     echo "API reference: $build_dir/doc/api/html/index.html" ;;
-  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS] | report [OUTDIR [ARGS...]] | docs" >&2
+  *) echo "usage: bash cmake/bootstrap.sh run [--json ...] | test | python [ARGS...] | bench [NAME [ARGS...]] | sanitize | fuzz [SECONDS] | report [OUTDIR [ARGS...]] | docs" >&2
      exit 2 ;;
 esac

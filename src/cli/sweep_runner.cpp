@@ -193,7 +193,7 @@ struct Executor {
 
 // The sweep on this process's threads, or on `ranks` when given.
 int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream& err, bool progress,
-        const Executor* ranks) {
+        const Executor* ranks, std::vector<SweepRow>* rows_out = nullptr) {
   const auto start = std::chrono::steady_clock::now();
   request.MergeSceneTable(text, request.scene);
   const Sweep sweep = Prepare(request, std::move(text));
@@ -246,6 +246,7 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
     WriteSweepCsv(store->directory() / "samples.csv", rows);
     (void)WriteSweepPlots(store->directory(), rows, PlotRequest(sweep, request, rows));
   }
+  if (rows_out) *rows_out = std::move(rows);
   if (request.json) {
     out << summary.dump(2) << "\n";
   } else {
@@ -260,7 +261,7 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
 // text comes from rank 0, so no other rank needs its file. When rank 0 refuses the sweep (or
 // fails) it stops the others before it reports why; they print nothing.
 int RunOnRanks(const SweepRequest& request, std::ostream& out, std::ostream& err, bool progress,
-               const MpiWorld& world) {
+               const MpiWorld& world, std::vector<SweepRow>* rows) {
   if (world.rank() == 0) {
     std::string text;
     try {
@@ -279,7 +280,7 @@ int RunOnRanks(const SweepRequest& request, std::ostream& out, std::ostream& err
                      });
                    }};
     try {
-      return Run(request, std::move(text), out, err, progress, &ranks);
+      return Run(request, std::move(text), out, err, progress, &ranks, rows);
     } catch (...) {
       if (!stopped) world.Dispatch({}, [](const std::string&) {});
       throw;
@@ -304,14 +305,15 @@ int RunOnRanks(const SweepRequest& request, std::ostream& out, std::ostream& err
 
 }  // namespace
 
-int RunSweep(const SweepRequest& request, std::ostream& out, std::ostream& err, bool progress) {
+int RunSweep(const SweepRequest& request, std::ostream& out, std::ostream& err, bool progress,
+             std::vector<SweepRow>* rows) {
 #if COSMEMS_WITH_MPI
   if (LaunchedByMpi()) {
     const MpiWorld world;
-    if (world.size() > 1) return RunOnRanks(request, out, err, progress, world);
+    if (world.size() > 1) return RunOnRanks(request, out, err, progress, world, rows);
   }
 #endif
-  return Run(request, SceneText(request.scene), out, err, progress, nullptr);
+  return Run(request, SceneText(request.scene), out, err, progress, nullptr, rows);
 }
 
 }  // namespace cosmems::internal

@@ -2,7 +2,7 @@
 # Fails when a library header or source includes a layer above its own. The order is that of
 # doc/architecture.md, lowest first; a folder may include itself and any folder ranked below it.
 # Two folders of one rank (the device backends) may not include each other. Programs (src/cli,
-# src/viewer, examples, bench, tests) sit on top and may include anything.
+# src/viewer, src/python, examples, bench, tests) sit on top and may include anything.
 # Usage: check_layers.sh ROOT   (ROOT holds include/cosmems and src)
 set -euo pipefail
 root=${1:?usage: check_layers.sh ROOT}
