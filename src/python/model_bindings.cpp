@@ -126,6 +126,10 @@ void BindModels(py::module_& m) {
           py::arg("j") = 0,
           "M_2j in SI (kg s^(2j) for translations) as a scipy.sparse matrix; M_0 is the mass.")
       .def(
+          "loads", [](const SceneModel& model) { return Eigen::VectorXd(model.loads_si()); },
+          "The scene's [loads] as one load vector f (N, N m), the pattern its time function "
+          "scales.")
+      .def(
           "static",
           [](const SceneModel& model, const Eigen::VectorXd& f) {
             py::gil_scoped_release release;

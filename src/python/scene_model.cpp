@@ -5,7 +5,9 @@
 #include <utility>
 
 #include "cosmems/analysis/frame_modal_analysis.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/load_vector.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/structure/frame_model.hpp"
@@ -56,13 +58,24 @@ std::vector<SceneModel::Dof> DofsOf(const FrameModel& model) {
   return dofs;
 }
 
+// The scene's [loads] on a beam, and on a device (internal units).
+template <int Dim>
+Eigen::VectorXd LoadsOf(const BeamModel<Dim>& model, const Scene& scene) {
+  return AssembleLoads(model, MakeLoadCase(scene));
+}
+
+Eigen::VectorXd LoadsOf(const FrameModel& model, const Scene& scene) {
+  return AssembleFrameLoads(model, MakeFrameLoadCase(scene, model.description()));
+}
+
 // The SceneModel of a BeamModel<Dim> or a FrameModel, built in place.
 template <class Model>
 class TypedSceneModel final : public SceneModel {
  public:
   template <class Description>
-  explicit TypedSceneModel(const Description& description) : model_(description) {
+  TypedSceneModel(const Scene& scene, const Description& description) : model_(description) {
     SetDofs(DofsOf(model_));
+    SetLoads(LoadsOf(model_, scene));
   }
 
   const SymmetricBandMatrix& Stiffness() const override { return model_.Stiffness(); }
@@ -83,18 +96,23 @@ class TypedSceneModel final : public SceneModel {
 
 std::unique_ptr<SceneModel> SceneModel::Make(const Scene& scene) {
   if (IsDevice(scene.structure.kind)) {
-    return std::make_unique<TypedSceneModel<FrameModel>>(MakeStructureDescription(scene));
+    return std::make_unique<TypedSceneModel<FrameModel>>(scene, MakeStructureDescription(scene));
   }
   if (scene.model.dimension == 2) {
-    return std::make_unique<TypedSceneModel<BeamModel<2>>>(MakeBeamDescription(scene));
+    return std::make_unique<TypedSceneModel<BeamModel<2>>>(scene, MakeBeamDescription(scene));
   }
-  return std::make_unique<TypedSceneModel<BeamModel<3>>>(MakeBeamDescription(scene));
+  return std::make_unique<TypedSceneModel<BeamModel<3>>>(scene, MakeBeamDescription(scene));
 }
 
 void SceneModel::SetDofs(std::vector<Dof> dofs) {
   dofs_ = std::move(dofs);
   scale_.resize(size());
   for (int i = 0; i < size(); ++i) scale_[i] = dofs_[i].translation ? units().length : 1.0;
+}
+
+void SceneModel::SetLoads(Eigen::VectorXd loads) {
+  const UnitSystem& u = units();
+  loads_si_ = loads.cwiseQuotient(scale_) * (u.force * u.length);
 }
 
 Eigen::SparseMatrix<double> SceneModel::MatrixSi(int j) const {

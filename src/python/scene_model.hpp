@@ -51,13 +51,19 @@ class SceneModel {
 
   /// K (j < 0) or M_2j in SI, the whole symmetric matrix.
   Eigen::SparseMatrix<double> MatrixSi(int j) const;
+  /// The scene's [loads] as one load vector (N, N m): its point forces, moments and distributed
+  /// loads, at the amplitude 1 that a transient's time function scales.
+  const Eigen::VectorXd& loads_si() const { return loads_si_; }
 
  protected:
   void SetDofs(std::vector<Dof> dofs);
+  /// The scene's loads in internal units; after SetDofs.
+  void SetLoads(Eigen::VectorXd loads);
 
  private:
   std::vector<Dof> dofs_;
   Eigen::VectorXd scale_;
+  Eigen::VectorXd loads_si_;
 };
 
 }  // namespace cosmems::python

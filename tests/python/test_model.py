@@ -77,6 +77,22 @@ def test_modes_against_scipy_on_the_same_matrices():
     assert series[0] == pytest.approx(f1, rel=1e-7)
 
 
+@pytest.mark.parametrize("name", ["cantilever", "microbridge", "folded-flexure"])
+def test_the_scenes_loads_give_the_cli_static(name):
+    # K d = the scene's loads, solved in SI, against the static analysis `cosmems run` reports
+    # (1e-10: the same linear solve, reached through the SI conversions both ways).
+    scene = cosmems.Scene(name)
+    model = scene.model()
+    d = model.static(model.loads())
+    result = scene.run(tables=False)
+    if name == "folded-flexure":
+        k = model.dof_labels.index("shuttle.ux")
+        assert d[k] == pytest.approx(result["bodies"]["shuttle"]["displacement"][0], rel=1e-10)
+    else:
+        uy = d[[label.endswith(".uy") for label in model.dof_labels]]
+        assert np.max(np.abs(uy)) == pytest.approx(result["max_deflection"], rel=1e-10)
+
+
 def test_a_device_model():
     # The folded-flexure's shuttle moves F / k along x, k = 24 E I / L^3 of its eight guided
     # beams (exact for Hermite elements: 1e-9).
