@@ -21,11 +21,13 @@ constexpr std::uintmax_t kMaxSceneBytes = 1 << 20;
 }  // namespace
 
 std::pair<std::string, std::string> SweepRequest::SplitVary(const std::string& assignment) {
-  const std::size_t equals = assignment.find('=');
-  if (equals == std::string::npos || equals == 0) {
+  // --set's split, with the option's own message.
+  try {
+    SceneOverride split = SceneOverride::Parse(assignment);
+    return {std::move(split.key), std::move(split.value)};
+  } catch (const SceneError&) {
     throw CliInputError("--vary " + assignment + ": expected KEY=SPEC");
   }
-  return {assignment.substr(0, equals), assignment.substr(equals + 1)};
 }
 
 void SweepRequest::SetShard(const std::string& text) {

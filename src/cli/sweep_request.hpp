@@ -26,7 +26,8 @@ struct SweepRequest {
   std::string out;
   bool json = false;
 
-  /// Splits "KEY=SPEC" at the first '='; throws CliInputError naming the option without one.
+  /// Splits "KEY=SPEC" at the first '=' and trims blanks, as --set does; throws CliInputError
+  /// naming the option without one.
   static std::pair<std::string, std::string> SplitVary(const std::string& assignment);
   /// Reads "K/N" with 1 <= K <= N into shard and shards; throws CliInputError otherwise.
   void SetShard(const std::string& text);

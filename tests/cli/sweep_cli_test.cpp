@@ -274,6 +274,10 @@ TEST(SweepCliTest, AnInvalidSweepIsRefusedBeforeAnySampleRuns) {
                                "--method", "halton"}),
                  "halton");
   ExpectContains(InvalidInput({"sweep", "cantilever"}), "nothing to sweep");
+  ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", " =1e-4:2e-4:3"}),
+                 "--vary  =1e-4:2e-4:3: expected KEY=SPEC");
+  // Blanks around the key and the spec are dropped, as --set drops them.
+  EXPECT_EQ(Sweep({"cantilever", "--vary", " structure.length = 1e-4:2e-4:3 "})["samples"], 3);
 }
 
 // A drawn value the scene refuses (a negative length) is a row with its status; the sweep
