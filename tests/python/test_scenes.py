@@ -88,8 +88,13 @@ def test_a_transient_history_comes_back_as_arrays():
 
 
 def test_out_keeps_the_files(tmp_path):
-    cosmems.Scene("cantilever").run(out=tmp_path / "run")
+    # The tables are this run's: a file already in the folder is left there and not read.
+    (tmp_path / "run").mkdir()
+    (tmp_path / "run" / "old.csv").write_text("x\n1\n")
+    result = cosmems.Scene("cantilever").run(out=tmp_path / "run")
     assert (tmp_path / "run" / "deflection.csv").is_file()
+    assert (tmp_path / "run" / "old.csv").is_file()
+    assert list(result["tables"]) == ["deflection"]
 
 
 def test_a_numerical_failure_is_the_status_as_in_the_cli():

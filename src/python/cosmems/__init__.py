@@ -18,6 +18,7 @@ import json
 import math
 import numbers
 import os
+import shutil
 import tempfile
 
 import numpy as np
@@ -107,20 +108,17 @@ class Scene:
         mode shapes, histories, ...) come back too, as ``result["tables"][NAME][COLUMN]``;
         with ``out`` they are also kept in that directory."""
         if out is not None:
-            os.makedirs(out, exist_ok=True)
-            text, ok = _cosmems.run(self._scene, self._sets, os.fspath(out))
-            result = _arrays(json.loads(text))
-            if tables and ok:
-                result["tables"] = _read_tables(out)
-            return result
-        if not tables:
-            return _arrays(json.loads(_cosmems.run(self._scene, self._sets, "")[0]))
+            os.makedirs(out, exist_ok=True)  # an unusable folder fails before the run
         with tempfile.TemporaryDirectory(prefix="cosmems-") as directory:
-            text, ok = _cosmems.run(self._scene, self._sets, directory)
+            files = tables or out is not None
+            text, ok = _cosmems.run(self._scene, self._sets, directory if files else "")
             result = _arrays(json.loads(text))
-            if ok:
-                result["tables"] = _read_tables(directory)
-            return result
+            if ok and tables:
+                result["tables"] = _read_tables(directory)  # this run's files only
+            if ok and out is not None:
+                for name in os.listdir(directory):
+                    shutil.copy(os.path.join(directory, name), out)
+        return result
 
     def __repr__(self):
         return f"cosmems.Scene({self._scene!r}, sets={self._sets!r})"
