@@ -35,25 +35,14 @@ std::shared_ptr<python::SceneModel> Cantilever(int elements) {
       "cantilever", {SceneOverride::Parse("model.elements=" + std::to_string(elements))}));
 }
 
-// A tip load on the cantilever's free end (its last uy).
-Eigen::VectorXd TipLoad(const python::SceneModel& model) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.size());
-  for (int i = 0; i < model.size(); ++i) {
-    if (model.dofs()[i].label.size() > 3 &&
-        model.dofs()[i].label.compare(model.dofs()[i].label.size() - 3, 3, ".uy") == 0) {
-      f[i] = -1e-7;  // the last uy wins: the tip's
-    }
-  }
-  return f;
-}
-
 void BM_StepIntegrator(benchmark::State& state) {
   const auto model = Cantilever(static_cast<int>(state.range(0)));
   LinearNewmarkIntegrator integrator(model->Mass(0), model->Stiffness(), {},
                                      GeneralizedAlphaParameters::Newmark(0.25, 0.5),
                                      1e-7 / model->units().time);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model->size());
-  const Eigen::VectorXd f = TipLoad(*model).cwiseProduct(model->dof_scale()) /
+  // The scene's tip force in internal units.
+  const Eigen::VectorXd f = model->loads_si().cwiseProduct(model->dof_scale()) /
                             (model->units().force * model->units().length);
   (void)integrator.Initialize(zero, zero, zero);
   for (auto _ : state) benchmark::DoNotOptimize(integrator.Step(f));
@@ -63,7 +52,7 @@ void BM_StepCpp(benchmark::State& state) {
   const auto model = Cantilever(static_cast<int>(state.range(0)));
   python::ModelStepper stepper(model, 1e-7, GeneralizedAlphaParameters::Newmark(0.25, 0.5), {});
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model->size());
-  const Eigen::VectorXd f = TipLoad(*model);
+  const Eigen::VectorXd& f = model->loads_si();  // the scene's tip force
   (void)stepper.Initialize(zero, zero, zero);
   for (auto _ : state) benchmark::DoNotOptimize(stepper.Step(f));
 }
@@ -78,8 +67,7 @@ import cosmems
 model = cosmems.Scene("cantilever").set("model.elements", elements).model()
 stepper = model.newmark(1e-7)
 zero = np.zeros(model.size)
-f = np.zeros(model.size)
-f[[i for i, label in enumerate(model.dof_labels) if label.endswith(".uy")][-1]] = -1e-7
+f = model.loads()
 stepper.initialize(zero, zero, zero)
 def run(n):
     step = stepper.step

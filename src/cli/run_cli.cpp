@@ -41,6 +41,13 @@ std::string OneLine(std::string text) {
   return text;
 }
 
+// An option given once per value, any number of times (--set A=1 --set B=2): one value each,
+// so that the positional SCENE may follow it.
+void Repeatable(CLI::Option* option) {
+  option->expected(1)->allow_extra_args(false)->multi_option_policy(
+      CLI::MultiOptionPolicy::TakeAll);
+}
+
 std::filesystem::path PrepareOutDirectory(const std::string& directory) {
   std::error_code error;
   std::filesystem::create_directories(directory, error);
@@ -125,13 +132,10 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   CLI::App* run = app.add_subcommand("run", "Run the analysis a scene declares");
   run->add_option("SCENE", request.scene, "A .toml scene file or the name of an embedded scene")
       ->required();
-  run->add_option("--set", request.overrides,
-                  "Override a key by its dotted path, VALUE read as TOML "
-                  "(--set model.elements=8); repeatable")
-      ->type_name("KEY=VALUE")
-      ->expected(1)
-      ->allow_extra_args(false)  // one value per --set, so SCENE may follow it
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  Repeatable(run->add_option("--set", request.overrides,
+                             "Override a key by its dotted path, VALUE read as TOML "
+                             "(--set model.elements=8); repeatable")
+                 ->type_name("KEY=VALUE"));
   run->add_flag("--json", request.json, "Print one JSON object on stdout and nothing else");
   run->add_option("--out", request.out, "Write CSV files (deflection, modes, history) into DIR")
       ->type_name("DIR")
@@ -146,11 +150,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       "netlist", "Print the netlist a parametric device's scene makes, as a frame scene to edit");
   netlist->add_option("SCENE", netlist_request.scene, "A .toml scene file or an embedded scene")
       ->required();
-  netlist->add_option("--set", netlist_request.overrides, "Override a key, as for run")
-      ->type_name("KEY=VALUE")
-      ->expected(1)
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  Repeatable(netlist->add_option("--set", netlist_request.overrides, "Override a key, as for run")
+                 ->type_name("KEY=VALUE"));
 
   internal::SweepRequest sweep_request;
   std::vector<std::string> varied;
@@ -159,35 +160,27 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       "sweep", "Run a scene over varied keys (a grid, random draws) and summarise the outputs");
   sweep->add_option("SCENE", sweep_request.scene, "A .toml scene file or an embedded scene")
       ->required();
-  sweep
-      ->add_option("--vary", varied,
-                   "Vary KEY by SPEC: A:B:N, log:A:B:N, [v1, v2], "
-                   "uniform:A:B, normal:M:S, lognormal:M:S, "
-                   "truncnormal:M:S:LO:HI; repeatable")
-      ->type_name("KEY=SPEC")
-      ->expected(1)
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  Repeatable(sweep
+                 ->add_option("--vary", varied,
+                              "Vary KEY by SPEC: A:B:N, log:A:B:N, [v1, v2], "
+                              "uniform:A:B, normal:M:S, lognormal:M:S, "
+                              "truncnormal:M:S:LO:HI; repeatable")
+                 ->type_name("KEY=SPEC"));
   sweep->add_option("--samples", sweep_request.samples, "Draws of the random keys (100)")
       ->type_name("N");
   sweep->add_option("--method", sweep_request.method, "monte-carlo (default), lhs or sobol")
       ->type_name("M");
   sweep->add_option("--seed", sweep_request.seed, "The sweep's seed (1)")->type_name("S");
-  sweep
-      ->add_option("--spec", sweep_request.specs,
-                   "A condition on an output (pullin_voltage_v>=20); repeatable")
-      ->type_name("EXPR")
-      ->expected(1)
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  sweep
-      ->add_option("--plot", sweep_request.plots,
-                   "An output to plot into --out (the specs' fields, else the analysis's "
-                   "first); repeatable")
-      ->type_name("FIELD")
-      ->expected(1)
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  Repeatable(sweep
+                 ->add_option("--spec", sweep_request.specs,
+                              "A condition on an output (pullin_voltage_v>=20); repeatable")
+                 ->type_name("EXPR"));
+  Repeatable(
+      sweep
+          ->add_option("--plot", sweep_request.plots,
+                       "An output to plot into --out (the specs' fields, else the analysis's "
+                       "first); repeatable")
+          ->type_name("FIELD"));
   sweep->add_option("--threads", sweep_request.threads, "Workers (one per hardware thread)")
       ->type_name("T")
       ->check(CLI::PositiveNumber);
@@ -197,11 +190,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                    "Write samples.jsonl, samples.csv and summary.json into DIR; resume there")
       ->type_name("DIR");
   sweep->add_flag("--json", sweep_request.json, "Print the summary as one JSON object");
-  sweep->add_option("--set", sweep_request.sets, "Override a key in every sample, as for run")
-      ->type_name("KEY=VALUE")
-      ->expected(1)
-      ->allow_extra_args(false)
-      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  Repeatable(
+      sweep->add_option("--set", sweep_request.sets, "Override a key in every sample, as for run")
+          ->type_name("KEY=VALUE"));
 
   CLI::App* scenes = app.add_subcommand("scenes", "List the embedded scenes, one line each");
   std::string show_name;

@@ -3,7 +3,6 @@
 
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -22,35 +21,8 @@ namespace py = pybind11;
 namespace cosmems::python {
 namespace {
 
-// What cosmems.sweep() passes on: the CLI's options, named as there.
-struct SweepArguments {
-  std::string scene;
-  std::vector<std::string> sets;
-  std::vector<std::pair<std::string, std::string>> vary;
-  std::vector<std::string> specs;
-  std::vector<std::string> plots;
-  std::optional<std::string> method;
-  std::optional<std::int64_t> samples;
-  std::optional<std::uint64_t> seed;
-  int threads = 0;
-  std::optional<std::string> shard;
-  std::string out;
-};
-
-// The summary JSON and the rows as one JSON array.
-std::pair<std::string, std::string> Sweep(const SweepArguments& arguments) {
-  internal::SweepRequest request;
-  request.scene = arguments.scene;
-  request.sets = arguments.sets;
-  request.vary = arguments.vary;
-  request.specs = arguments.specs;
-  request.plots = arguments.plots;
-  request.method = arguments.method;
-  request.samples = arguments.samples;
-  request.seed = arguments.seed;
-  request.threads = arguments.threads;
-  if (arguments.shard) request.SetShard(*arguments.shard);
-  request.out = arguments.out;
+// `cosmems sweep --json`: the summary JSON and the rows as one JSON array.
+std::pair<std::string, std::string> Sweep(internal::SweepRequest request) {
   request.json = true;
   std::ostringstream out, err;
   std::vector<internal::SweepRow> rows;
@@ -99,20 +71,21 @@ void BindScenes(py::module_& m) {
       py::arg("scene"), py::arg("sets"), py::arg("out"), py::call_guard<py::gil_scoped_release>(),
       "Runs the scene's analysis: (the JSON result, whether its status is ok). With `out` (an "
       "existing directory) the CSV files of `cosmems run --out` are written there.");
-  py::class_<SweepArguments>(m, "SweepArguments")
+  using internal::SweepRequest;
+  py::class_<SweepRequest>(m, "SweepRequest", "The options of `cosmems sweep`, named as there.")
       .def(py::init<>())
-      .def_readwrite("scene", &SweepArguments::scene)
-      .def_readwrite("sets", &SweepArguments::sets)
-      .def_readwrite("vary", &SweepArguments::vary)
-      .def_readwrite("specs", &SweepArguments::specs)
-      .def_readwrite("plots", &SweepArguments::plots)
-      .def_readwrite("method", &SweepArguments::method)
-      .def_readwrite("samples", &SweepArguments::samples)
-      .def_readwrite("seed", &SweepArguments::seed)
-      .def_readwrite("threads", &SweepArguments::threads)
-      .def_readwrite("shard", &SweepArguments::shard)
-      .def_readwrite("out", &SweepArguments::out);
-  m.def("sweep", &Sweep, py::arg("arguments"), py::call_guard<py::gil_scoped_release>(),
+      .def_readwrite("scene", &SweepRequest::scene)
+      .def_readwrite("sets", &SweepRequest::sets)
+      .def_readwrite("vary", &SweepRequest::vary)
+      .def_readwrite("specs", &SweepRequest::specs)
+      .def_readwrite("plots", &SweepRequest::plots)
+      .def_readwrite("method", &SweepRequest::method)
+      .def_readwrite("samples", &SweepRequest::samples)
+      .def_readwrite("seed", &SweepRequest::seed)
+      .def_readwrite("threads", &SweepRequest::threads)
+      .def("set_shard", &SweepRequest::SetShard, py::arg("text"), "--shard K/N")
+      .def_readwrite("out", &SweepRequest::out);
+  m.def("sweep", &Sweep, py::arg("request"), py::call_guard<py::gil_scoped_release>(),
         "`cosmems sweep`: (the summary JSON, the rows as a JSON array).");
 }
 

@@ -134,21 +134,21 @@ def sweep(scene, vary=None, samples=None, method=None, seed=None, spec=None, thr
     Runs on ``threads`` threads (one per hardware thread by default) without the GIL."""
     if not isinstance(scene, Scene):
         scene = Scene(scene)
-    arguments = _cosmems.SweepArguments()
-    arguments.scene = scene._scene
-    arguments.sets = list(scene._sets)
-    arguments.vary = [(key, value if isinstance(value, str) else toml_literal(value))
-                      for key, value in (vary or {}).items()]
-    arguments.specs = _strings(spec)
-    arguments.plots = _strings(plot)
-    arguments.method = method
-    arguments.samples = samples
-    arguments.seed = seed
-    arguments.threads = threads or 0
+    request = _cosmems.SweepRequest()
+    request.scene = scene._scene
+    request.sets = list(scene._sets)
+    request.vary = [(key, value if isinstance(value, str) else toml_literal(value))
+                    for key, value in (vary or {}).items()]
+    request.specs = _strings(spec)
+    request.plots = _strings(plot)
+    request.method = method
+    request.samples = samples
+    request.seed = seed
+    request.threads = threads or 0
     if shard is not None:
-        arguments.shard = shard if isinstance(shard, str) else f"{shard[0]}/{shard[1]}"
-    arguments.out = os.fspath(out) if out is not None else ""
-    summary_text, rows_text = _cosmems.sweep(arguments)
+        request.set_shard(shard if isinstance(shard, str) else f"{shard[0]}/{shard[1]}")
+    request.out = os.fspath(out) if out is not None else ""
+    summary_text, rows_text = _cosmems.sweep(request)
     summary = _arrays(json.loads(summary_text))
     summary["rows"] = _arrays(json.loads(rows_text))
     return summary
