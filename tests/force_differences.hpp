@@ -1,7 +1,7 @@
 #pragma once
 
 // The tangent oracle of every NonlinearForce: central differences of its energy for the force,
-// and of the force for the tangent.
+// and of the force for the tangent; and the same force when the band part is not wanted.
 
 #include <gtest/gtest.h>
 
@@ -41,6 +41,17 @@ void ExpectForceAndTangentMatchDifferences(NonlinearForce& force, const Eigen::V
   }
   EXPECT_LT((fd_force - r).norm(), tolerance * r.norm());
   EXPECT_LT((fd_tangent - dense).norm(), tolerance * dense.norm());
+  // Asked for the rank-one part alone (a Newton iteration on a kept factor), the force gives the
+  // same r and rank-one part, to the bit.
+  Eigen::VectorXd alone = Eigen::VectorXd::Zero(n);
+  ForceTangent rank_one(n, bandwidth);
+  rank_one.ClearRankOne();
+  ASSERT_TRUE(force.Evaluate(d, alone, rank_one));
+  EXPECT_TRUE(alone == r);
+  EXPECT_EQ(rank_one.rank_one_scale(), tangent.rank_one_scale());
+  if (tangent.rank_one_scale() != 0.0) {
+    EXPECT_TRUE(rank_one.rank_one_vector() == tangent.rank_one_vector());
+  }
 }
 
 /// Expects the tangents of the velocity-dependent part of `force` (EvaluateViscous) at (d, v)

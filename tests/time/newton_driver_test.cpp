@@ -1,24 +1,59 @@
 // NewtonDriver's convergence at the residual's rounding floor, on a scheme written here whose
 // floor lies above the tolerance (as a fine mesh's K d does): the solve ends there, the bound is
-// formed once a solve, and the factor serves the next solve.
+// formed once a solve, and the factor serves the next solve; and its matrix deferred to the
+// iterations that factor.
 #include "cosmems/time/newton_driver.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace cosmems {
 namespace newton_driver_test {
+
+// One unknown x, corrected by the residual over the factored slope: what the schemes below share.
+class OneUnknownScheme : public PlainNewtonScheme {
+ public:
+  void SetLoad(double b) { b_ = b; }
+  double x() const { return x_; }
+
+  Status SolveKept() {
+    correction_ = residual_ / factored_;
+    return Status::kOk;
+  }
+  NewtonCorrection Update() {
+    x_ -= correction_;
+    NewtonCorrection out;
+    out.size = std::abs(correction_);
+    out.iterate = std::abs(x_);
+    return out;
+  }
+  Status Finish() { return Status::kOk; }
+
+ protected:
+  // Factors the slope and solves with it: a factor the driver may keep.
+  NewtonFactor FactorSlope(double slope) {
+    factored_ = slope;
+    NewtonFactor out;
+    out.reusable = true;
+    out.status = SolveKept();
+    return out;
+  }
+
+  double b_ = 0.0, x_ = 0.0, residual_ = 0.0;
+
+ private:
+  double correction_ = 0.0, factored_ = 1.0;
+};
 
 // a x = b on one unknown, its residual carrying an error of kFloor of the reference, of
 // alternating sign, at every evaluation (the rounding of products that do not cancel exactly):
 // no iteration takes the residual below it, and the corrections it drives stay far above the
 // increment test's. RoundOff() bounds it by twice that.
-class FloorScheme : public PlainNewtonScheme {
+class FloorScheme : public OneUnknownScheme {
  public:
-  explicit FloorScheme(double b) : b_(b) {}
-  void SetLoad(double b) { b_ = b; }
-  double x() const { return x_; }
+  explicit FloorScheme(double b) { b_ = b; }
   int round_offs() const { return round_offs_; }
 
   bool Evaluate(NewtonResidual& out) {
@@ -33,35 +68,98 @@ class FloorScheme : public PlainNewtonScheme {
     ++round_offs_;
     return 2.0 * kFloor * reference_;
   }
-  Status SolveKept() {
-    correction_ = residual_ / kA;
-    return Status::kOk;
-  }
-  NewtonFactor Factor(double /*shift*/) {
-    NewtonFactor out;
-    out.reusable = true;
-    out.status = SolveKept();
-    return out;
-  }
-  NewtonCorrection Update() {
-    x_ -= correction_;
-    NewtonCorrection out;
-    out.size = std::abs(correction_);
-    out.iterate = std::abs(x_);
-    return out;
-  }
-  Status Finish() { return Status::kOk; }
+  NewtonFactor Factor(double /*shift*/) { return FactorSlope(kA); }
 
  private:
   static constexpr double kA = 3.0;
   static constexpr double kFloor = 1e-8;  // of the reference: above residual_tolerance (1e-10)
-  double b_, x_ = 0.0, residual_ = 0.0, correction_ = 0.0, reference_ = 0.0, sign_ = 1.0;
+  double reference_ = 0.0, sign_ = 1.0;
   int round_offs_ = 0;
+};
+
+// x^3 + x = b, its matrix 3 x^2 + 1 evaluated with the residual (Evaluate) and counted. Factor()
+// notes a matrix taken at another iterate than the one it solves at.
+class CubicScheme : public OneUnknownScheme {
+ public:
+  int matrix_evaluations() const { return matrix_evaluations_; }
+  bool stale_matrix() const { return stale_; }
+
+  bool Evaluate(NewtonResidual& out) {
+    Residual(out);
+    return EvaluateMatrix();
+  }
+  NewtonFactor Factor(double /*shift*/) {
+    stale_ = stale_ || matrix_at_ != x_;
+    return FactorSlope(matrix_);
+  }
+
+ protected:
+  bool Residual(NewtonResidual& out) {
+    residual_ = x_ * x_ * x_ + x_ - b_;
+    out.norm = std::abs(residual_);
+    out.reference = std::abs(x_ * x_ * x_) + std::abs(x_) + std::abs(b_);
+    return true;
+  }
+  bool EvaluateMatrix() {
+    matrix_ = 3.0 * x_ * x_ + 1.0;
+    matrix_at_ = x_;
+    ++matrix_evaluations_;
+    return true;
+  }
+
+ private:
+  double matrix_ = 1.0, matrix_at_ = 0.0;
+  int matrix_evaluations_ = 0;
+  bool stale_ = false;
+};
+
+// The same scheme able to defer its matrix to the iterations that factor.
+class DeferringCubicScheme : public CubicScheme {
+ public:
+  bool EvaluateResidual(NewtonResidual& out) { return Residual(out); }
+  using CubicScheme::EvaluateMatrix;
 };
 
 }  // namespace newton_driver_test
 
+using newton_driver_test::CubicScheme;
+using newton_driver_test::DeferringCubicScheme;
 using newton_driver_test::FloorScheme;
+
+// Where the kept factor is expected to serve, a scheme that can defer its matrix evaluates its
+// residual alone, and the matrix only when the iteration factors after all: the iterates and the
+// counts are those of the scheme that evaluates both every time, and every factor is of the
+// matrix at its iterate. The loads creep (the kept factor serves: a matrix every few solves)
+// and then jump (the kept factor's correction contracts too little, after a residual evaluated
+// alone in the expectation that it would serve: the matrix is evaluated then).
+TEST(NewtonDriverTest, AMatrixDeferredToTheIterationsThatFactorChangesNoIterate) {
+  NewtonDriver plain_driver, deferring_driver;
+  CubicScheme plain;
+  DeferringCubicScheme deferring;
+  std::vector<double> loads;
+  for (int i = 0; i < 20; ++i) loads.push_back(2.0 + 1e-5 * i);
+  loads.push_back(3.0);
+  for (int i = 1; i < 10; ++i) loads.push_back(3.0 + 1e-5 * i);
+  for (const double b : loads) {
+    plain.SetLoad(b);
+    deferring.SetLoad(b);
+    ASSERT_EQ(plain_driver.Solve(plain, 1.0), Status::kOk);
+    ASSERT_EQ(deferring_driver.Solve(deferring, 1.0), Status::kOk);
+    EXPECT_EQ(deferring.x(), plain.x()) << b;
+    EXPECT_NEAR(plain.x() * plain.x() * plain.x() + plain.x(), b, 1e-9 * b);
+  }
+  const NewtonStats& p = plain_driver.stats();
+  const NewtonStats& d = deferring_driver.stats();
+  EXPECT_EQ(d.evaluations, p.evaluations);
+  EXPECT_EQ(d.iterations, p.iterations);
+  EXPECT_EQ(d.factorizations, p.factorizations);
+  EXPECT_FALSE(deferring.stale_matrix());
+  EXPECT_EQ(plain.matrix_evaluations(), p.evaluations);
+  // Every factorisation had its matrix; most evaluations did without one.
+  EXPECT_GE(deferring.matrix_evaluations(), d.factorizations);
+  EXPECT_GE(d.factorizations, 2);  // the jump refactored
+  EXPECT_LT(deferring.matrix_evaluations(), d.evaluations / 3);
+}
 
 TEST(NewtonDriverTest, ASolveEndsAtTheRoundingFloorAndKeepsItsFactor) {
   NewtonDriver driver;

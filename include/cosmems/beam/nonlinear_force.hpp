@@ -16,11 +16,22 @@ class ForceTangent {
   ForceTangent(int size, int bandwidth)
       : band_(size, bandwidth), rank_one_(Eigen::VectorXd::Zero(size)) {}
 
-  /// Zeroes both parts; allocates nothing.
+  /// Zeroes both parts and asks the forces for both; allocates nothing.
   void Clear() {
     band_.mutable_data().setZero();
     scale_ = 0.0;
+    band_wanted_ = true;
   }
+  /// Zeroes the rank-one part and tells the forces the band part is not wanted: a Newton
+  /// iteration that solves with a kept factor uses the rank-one part alone, and assembling the
+  /// band (the surface forces' quadrature of it, a pass over the whole band to clear it) costs
+  /// as much as the force itself. A force may add band entries all the same: they are ignored.
+  void ClearRankOne() {
+    scale_ = 0.0;
+    band_wanted_ = false;
+  }
+  /// Whether Evaluate() should add the band part (false after ClearRankOne()).
+  bool band_wanted() const { return band_wanted_; }
 
   SymmetricBandMatrix& band() { return band_; }
   const SymmetricBandMatrix& band() const { return band_; }
@@ -44,6 +55,7 @@ class ForceTangent {
   SymmetricBandMatrix band_;
   Eigen::VectorXd rank_one_;
   double scale_ = 0.0;
+  bool band_wanted_ = true;
 };
 
 /// A displacement-dependent internal force r(d) with its consistent tangent dr/dd, added to a
@@ -58,7 +70,9 @@ class NonlinearForce {
   virtual ~NonlinearForce() = default;
 
   /// Adds r(d) to `force` and dr/dd to `tangent` (the structure's band pattern, plus a rank-one
-  /// part if the force needs one), both in the model's internal units.
+  /// part if the force needs one), both in the model's internal units. The band part may be
+  /// left out where !tangent.band_wanted(); the rank-one part never: r and it must be the same
+  /// either way.
   virtual bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
                         ForceTangent& tangent) = 0;
 

@@ -40,7 +40,7 @@ class StretchingForce final : public NonlinearForce {
     const double extra = 0.5 * d.dot(slope_) / compliance_;  // N - N0
     if (!std::isfinite(extra)) return false;
     force += extra * slope_;
-    tangent.band().mutable_data() += extra * model_.Geometric(0).data();
+    if (tangent.band_wanted()) tangent.band().mutable_data() += extra * model_.Geometric(0).data();
     tangent.SetRankOne(1.0 / compliance_, slope_);
     return true;
   }

@@ -61,6 +61,7 @@ class ProbeFaces : public NonlinearForce {
     const Face& f = faces_[static_cast<std::size_t>(face)];
     for (int i = 0; i < f.count; ++i) {
       force[f.dof[i]] += stiffness_ * delta * f.sign * f.n[i];
+      if (!tangent.band_wanted()) continue;
       for (int j = i; j < f.count; ++j)
         tangent.band().Add(f.dof[i], f.dof[j], stiffness_ * f.n[i] * f.n[j]);
     }

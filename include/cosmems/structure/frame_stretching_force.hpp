@@ -53,6 +53,7 @@ class FrameStretchingForce final : public FrameElementForce {
       for (int a = 0; a < 12; ++a) {
         if (dofs[a] >= 0) force[dofs[a]] += carried[a];
       }
+      if (!tangent.band_wanted()) continue;
       FrameModel::Element::Matrix h = local.tension * geometric_[e];
       h.noalias() += (ea / l) * local.slope * local.slope.transpose();
       for (int a = 0; a < 12; ++a) {  // EA (g a^T + a g^T), a = (-1/l at u_a, +1/l at u_b)

@@ -40,12 +40,13 @@ class FrameGapForce final : public FrameElementForce {
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     const double length_m = integral_.length_m();
+    const bool band = tangent.band_wanted();  // the slope only for the tangent
     return integral_.Integrate(
         d, nullptr,
         [&](const FrameGapIntegral::Face& face, double gap, double area_m2, double /*vy*/) {
           const Pressure pressure = AtFaceWidth(pressure_, face.width_m);
           const double area = scale_ * area_m2 / force_n_;
-          const double slope = integral_.Held(gap) ? 0.0 : pressure.Slope(gap) * length_m;
+          const double slope = !band || integral_.Held(gap) ? 0.0 : pressure.Slope(gap) * length_m;
           return std::pair{pressure.Value(gap) * area, slope * area};
         },
         force, tangent);

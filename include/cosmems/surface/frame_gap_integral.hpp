@@ -111,10 +111,11 @@ class FrameGapIntegral {
   /// giving the point's force along its motion toward +y and that force's derivative per
   /// internal length unit of the motion, both in internal force units; v_y is the point's
   /// velocity toward +y for the velocity `v` (internal units; 0 without one). False where a gap
-  /// closes or is not finite.
+  /// closes or is not finite. The tangent is left out where !tangent.band_wanted().
   template <typename Law>
   bool Integrate(const Eigen::VectorXd& d, const Eigen::VectorXd* v, Law&& law,
                  Eigen::VectorXd& force, ForceTangent& tangent) const {
+    const bool band = tangent.band_wanted();
     for (const Face& face : faces_) {
       if (face.plate && !plates_) continue;
       Eigen::Vector4d f = Eigen::Vector4d::Zero();
@@ -123,18 +124,20 @@ class FrameGapIntegral {
       const bool open = Visit(face, d, [&](const Eigen::Vector4d& phi, double gap, double area) {
         const auto [value, slope] = law(face, gap, area, cv.dot(phi));
         f += value * phi;
+        if (!band) return;
         for (int a = 0; a < 4; ++a) {
           const double sa = slope * phi[a];
           for (int b = a; b < 4; ++b) t(a, b) += sa * phi[b];
         }
       });
       if (!open) return false;
+      for (int i = 0; i < face.count; ++i) force[face.dof[i]] += face.weights.row(i).dot(f);
+      if (!band) continue;
       for (int a = 0; a < 4; ++a) {
         for (int b = 0; b < a; ++b) t(a, b) = t(b, a);
       }
       for (int i = 0; i < face.count; ++i) {
         const Eigen::Vector4d ti = t * face.weights.row(i).transpose();
-        force[face.dof[i]] += face.weights.row(i).dot(f);
         for (int j = i; j < face.count; ++j) {
           tangent.band().Add(face.dof[i], face.dof[j], face.weights.row(j).dot(ti));
         }

@@ -151,6 +151,7 @@ class FrameSubstrateContact final : public FrameElementForce {
       const DofWeights& point = points_.points()[k];
       for (int a = 0; a < point.count; ++a) {
         force[point.dof[a]] -= p * point.n[a];
+        if (!tangent.band_wanted()) continue;
         for (int b = 0; b < point.count; ++b) {
           if (point.dof[b] >= point.dof[a]) {
             tangent.band().Add(point.dof[a], point.dof[b], Penalty(k) * point.n[a] * point.n[b]);

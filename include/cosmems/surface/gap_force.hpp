@@ -26,14 +26,18 @@ class GapForce final : public NonlinearForce {
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
     const double length_m = integral_.length_m();
+    const bool band = tangent.band_wanted();
     return integral_.Integrate(d, [&](const typename GapIntegral<Dim>::Segment& s,
                                       const std::array<double, 4>& n, double gap, double weight) {
       const double w = weight * s.width_m;
       const double p = w * pressure_.Value(gap);
+      for (int i = 0; i < 4; ++i) {
+        if (s.dof[i] >= 0) force[s.dof[i]] += n[i] * p;
+      }
+      if (!band) return;
       const double dp = integral_.Held(gap) ? 0.0 : w * pressure_.Slope(gap) * length_m;
       for (int i = 0; i < 4; ++i) {
         if (s.dof[i] < 0) continue;
-        force[s.dof[i]] += n[i] * p;
         for (int j = i; j < 4; ++j) {
           if (s.dof[j] >= 0) tangent.band().Add(s.dof[i], s.dof[j], dp * n[i] * n[j]);
         }

@@ -126,6 +126,7 @@ class SubstrateContact final : public NonlinearForce {
       for (int a = 0; a < 4; ++a) {
         if (point.dof[a] < 0) continue;
         force[point.dof[a]] -= p * point.shape[a];
+        if (!tangent.band_wanted()) continue;
         for (int b = a; b < 4; ++b) {
           if (point.dof[b] >= 0) {
             tangent.band().Add(point.dof[a], point.dof[b],

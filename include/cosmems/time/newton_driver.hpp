@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 #include "cosmems/core/status.hpp"
 #include "cosmems/time/newton_options.hpp"
@@ -71,6 +73,11 @@ class PlainNewtonScheme {
 ///   solve that took the residual to its rounding floor counts as a full contraction: the floor,
 ///   not the factor, stopped it, so the factor serves the next step (on a fine mesh every step
 ///   would otherwise refactor).
+/// - Where the kept factor is expected to serve (kept for this key, its last solve contracting
+///   enough), a scheme that can defer its matrix evaluates the residual alone, and the matrix
+///   only if the iteration factors after all: the matrix is the surface forces' quadrature of
+///   their tangent and a pass over the whole band, as dear as the residual, and unused by a kept
+///   factor. The iterates are the same either way.
 /// - A matrix that is not definite (inside a Casimir or electrostatic snap) is factored again
 ///   with its mass term raised, up to that of a step 2^-10 as long: the iteration creeps the way
 ///   a shorter step would but solves this step's equations. A raised factor is never kept, and
@@ -88,6 +95,9 @@ class PlainNewtonScheme {
 ///   NewtonCorrection Update()       applies the correction
 ///   bool Settle()                   the forces keep their state at the converged iterate
 ///   Status Finish()                 takes the converged iterate
+/// and, to defer its matrix to the iterations that factor (above), both of
+///   bool EvaluateResidual(NewtonResidual&)  as Evaluate, the matrix left out
+///   bool EvaluateMatrix()                   the matrix at the iterate last evaluated
 /// Nothing here allocates.
 class NewtonDriver {
  public:
@@ -175,7 +185,8 @@ class NewtonDriver {
       if (settles > options_.max_settles) return Status::kNotConverged;
       ++stats_.evaluations;
       NewtonResidual r;
-      if (!EvaluateWithinDomain(scheme, iteration == 0, r)) return Status::kNonFinite;
+      const bool deferred = DefersMatrix<Scheme>() && KeptMayServe(key);
+      if (!EvaluateWithinDomain(scheme, iteration == 0, deferred, r)) return Status::kNonFinite;
       if (!std::isfinite(r.norm)) return Status::kNonFinite;
       if (iteration > 0) contraction_ = r.norm / previous;
       const double tolerance = options_.residual_tolerance * r.reference;
@@ -190,9 +201,7 @@ class NewtonDriver {
         continue;
       }
       previous = r.norm;
-      const bool keep = options_.reuse_contraction > 0.0 && key_ == key &&
-                        contraction_ <= options_.reuse_contraction &&
-                        (iteration == 0 || contraction_ * r.norm <= tolerance);
+      const bool keep = KeptMayServe(key) && (iteration == 0 || contraction_ * r.norm <= tolerance);
       bool shifted = false;
       if (keep) {
         // A kept factor may not serve the fresh matrix (its rank-one part): iterate again from
@@ -202,6 +211,9 @@ class NewtonDriver {
           continue;
         }
       } else {
+        if constexpr (DefersMatrix<Scheme>()) {
+          if (deferred && !scheme.EvaluateMatrix()) return Status::kNonFinite;
+        }
         const Status solved = FactorAndSolve(scheme, key, shifted);
         if (solved != Status::kOk) return solved;
       }
@@ -216,11 +228,36 @@ class NewtonDriver {
     return Status::kNotConverged;
   }
 
-  // Evaluates at the iterate, pulling it back into the forces' domain along its last correction.
+  // Whether the scheme can evaluate its residual without its matrix (EvaluateResidual) and the
+  // matrix afterwards (EvaluateMatrix): overloads for the test, DefersMatrix<Scheme>() for it.
   template <typename Scheme>
-  static bool EvaluateWithinDomain(Scheme& scheme, bool first, NewtonResidual& r) {
+  static auto Defers(Scheme* s, int)
+      -> decltype(s->EvaluateResidual(std::declval<NewtonResidual&>()), s->EvaluateMatrix(),
+                  std::true_type{});
+  template <typename Scheme>
+  static std::false_type Defers(Scheme*, long);
+  template <typename Scheme>
+  static constexpr bool DefersMatrix() {
+    return decltype(Defers<Scheme>(nullptr, 0))::value;
+  }
+  // Whether the kept factor serves this matrix family and contracted enough last time.
+  bool KeptMayServe(double key) const {
+    return options_.reuse_contraction > 0.0 && key_ == key &&
+           contraction_ <= options_.reuse_contraction;
+  }
+
+  // Evaluates at the iterate (the matrix `deferred`), pulling it back into the forces' domain
+  // along its last correction.
+  template <typename Scheme>
+  static bool EvaluateWithinDomain(Scheme& scheme, bool first, bool deferred, NewtonResidual& r) {
     for (int retreat = 0;; ++retreat) {
-      if (scheme.Evaluate(r)) return true;
+      bool inside = false;
+      if constexpr (DefersMatrix<Scheme>()) {
+        inside = deferred ? scheme.EvaluateResidual(r) : scheme.Evaluate(r);
+      } else {
+        inside = scheme.Evaluate(r);
+      }
+      if (inside) return true;
       if (first || retreat == 10 || !scheme.Retreat()) return false;
     }
   }

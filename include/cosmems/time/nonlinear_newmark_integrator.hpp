@@ -72,9 +72,9 @@ class NonlinearNewmarkIntegrator {
     // Sizes the factor's buffers now (rank-one part included), so that no step allocates them.
     (void)factor_.Compute(mass, 1.0, Eigen::VectorXd::Zero(n));
     for (Eigen::VectorXd* v :
-         {&d_,      &v_,      &a_,        &f_,      &d_new_,   &v_new_, &a_new_,
-          &d_mid_,  &v_mid_,  &residual_, &work_,   &r_,       &f_mid_, &d_star_,
-          &v_star_, &d_save_, &v_save_,   &a_save_, &r_start_, &r_save_}) {
+         {&d_,      &v_,      &a_,        &f_,      &d_new_,   &v_new_,  &a_new_,
+          &d_mid_,  &v_mid_,  &residual_, &work_,   &r_,       &f_mid_,  &d_star_,
+          &v_star_, &d_save_, &v_save_,   &a_save_, &r_start_, &r_save_, &scratch_}) {
       v->setZero(n);
     }
   }
@@ -194,11 +194,28 @@ class NonlinearNewmarkIntegrator {
   }
 
   // NewtonDriver's scheme: R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for
-  // the scale, with d_(n+1) the unknown.
+  // the scale, with d_(n+1) the unknown; the force's tangent with it, or its rank-one part alone
+  // (EvaluateResidual: the matrix deferred, EvaluateMatrix).
   bool Evaluate(NewtonResidual& out) {
+    tangent_.Clear();
+    return EvaluateWithTangent(out);
+  }
+  bool EvaluateResidual(NewtonResidual& out) {
+    tangent_.ClearRankOne();
+    return EvaluateWithTangent(out);
+  }
+  // The force's whole tangent at the iterate EvaluateResidual() evaluated; its r, the same,
+  // goes to a scratch vector.
+  bool EvaluateMatrix() {
+    tangent_.Clear();
+    scratch_.setZero();
+    if (!force_.Evaluate(d_new_, scratch_, tangent_)) return false;
+    return !force_.HasViscousPart() ||
+           force_.EvaluateViscous(d_new_, v_new_, p_.gamma / (p_.beta * h_), scratch_, tangent_);
+  }
+  bool EvaluateWithTangent(NewtonResidual& out) {
     const double am = p_.alpha_m, af = p_.alpha_f, gamma = p_.gamma, h = h_;
     r_.setZero();
-    tangent_.Clear();
     if (!force_.Evaluate(d_new_, r_, tangent_)) return false;
     // x_(n+1-af) = (1-af) x_(n+1) + af x_n; plain Newmark (af = 0) uses d_(n+1) as it is.
     if (af != 0.0) d_mid_ = (1.0 - af) * d_new_ + af * d_;
@@ -358,7 +375,7 @@ class NonlinearNewmarkIntegrator {
   bool streak_ = false;             ///< whether linear_ holds the state (d_, v_, a_ do not)
   const Eigen::VectorXd* f_target_ = nullptr;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
-      f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_;
+      f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_, scratch_;
 };
 
 }  // namespace cosmems
