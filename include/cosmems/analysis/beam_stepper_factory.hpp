@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "cosmems/analysis/frame_modal_analysis.hpp"  // SolveModal of a FrameModel
 #include "cosmems/analysis/modal_analysis.hpp"
 #include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/beam/beam_model.hpp"

@@ -1,6 +1,5 @@
 #pragma once
 
-#include "cosmems/analysis/frame_modal_analysis.hpp"  // the modal path's modes of a frame
 #include "cosmems/haptics/frame_probe_contact.hpp"
 #include "cosmems/haptics/probed_physics.hpp"
 #include "cosmems/structure/frame_model.hpp"

@@ -195,14 +195,15 @@ class NonlinearNewmarkIntegrator {
 
   // NewtonDriver's scheme: R = M a_(n+1-am) + C v_mid + K d_mid + r - f_mid, term by term for
   // the scale, with d_(n+1) the unknown; the force's tangent with it, or its rank-one part alone
-  // (EvaluateResidual: the matrix deferred, EvaluateMatrix).
+  // (EvaluateResidual: the matrix deferred, EvaluateMatrix). EvaluateAtIterate fills the parts
+  // of the tangent that tangent_ was cleared for.
   bool Evaluate(NewtonResidual& out) {
     tangent_.Clear();
-    return EvaluateWithTangent(out);
+    return EvaluateAtIterate(out);
   }
   bool EvaluateResidual(NewtonResidual& out) {
     tangent_.ClearRankOne();
-    return EvaluateWithTangent(out);
+    return EvaluateAtIterate(out);
   }
   // The force's whole tangent at the iterate EvaluateResidual() evaluated; its r, the same,
   // goes to a scratch vector.
@@ -213,7 +214,7 @@ class NonlinearNewmarkIntegrator {
     return !force_.HasViscousPart() ||
            force_.EvaluateViscous(d_new_, v_new_, p_.gamma / (p_.beta * h_), scratch_, tangent_);
   }
-  bool EvaluateWithTangent(NewtonResidual& out) {
+  bool EvaluateAtIterate(NewtonResidual& out) {
     const double am = p_.alpha_m, af = p_.alpha_f, gamma = p_.gamma, h = h_;
     r_.setZero();
     if (!force_.Evaluate(d_new_, r_, tangent_)) return false;
