@@ -12,7 +12,9 @@
 // (cpu_*): the difference is time the thread spent preempted, which the machine decides.
 #include <time.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -28,6 +30,7 @@
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
+#include "flop_rate.hpp"
 #include "reference_beam.hpp"
 
 namespace cosmems {
@@ -226,6 +229,32 @@ BENCHMARK(BM_TouchedDeviceTick)
     ->Args({125, 0, 1, 2, 125})
     ->ArgNames({"elements", "modes", "casimir", "contact", "gap_ratio_pct"})
     ->Iterations(2 * kCycle)
+    ->Unit(benchmark::kMicrosecond);
+
+// The machine's own share of a tick's p99: a tick of fixed arithmetic (eight independent
+// multiply-add chains, the yardstick of flop_rate.hpp) sized to `work_us` at the machine's rate,
+// timed as the ticks above. Its work never changes, so whatever spreads its p99 and maximum
+// beyond its median is the machine: interrupts, the other core's load, a virtual machine's host.
+void BM_FixedWorkTick(benchmark::State& state) {
+  const double work_us = static_cast<double>(state.range(0));
+  const long rounds = std::lround(work_us * 1e3 / (2.0 * 8.0 * bench::NanosecondsPerFlop()));
+  std::array<double, 8> chain{1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7};
+  double a = 0.999999, b = 1e-9;
+  benchmark::DoNotOptimize(a);
+  benchmark::DoNotOptimize(b);
+  TimeTicks(state, [&] {
+    for (long round = 0; round < rounds; ++round) {
+      for (double& x : chain) x = x * a + b;
+    }
+    benchmark::DoNotOptimize(chain.data());
+    return true;
+  });
+}
+BENCHMARK(BM_FixedWorkTick)
+    ->Arg(20)
+    ->Arg(100)
+    ->ArgName("work_us")
+    ->Iterations(4 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

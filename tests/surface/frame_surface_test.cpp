@@ -291,10 +291,14 @@ TEST(FrameGapIntegralTest, AMemberNearlyTouchingTakesTheForceOfItsEnergy) {
   EXPECT_NEAR(power, expected, 1e-7 * expected);
 }
 
-// A plate tilted so that its gap runs from 1 % to 150 % of the nominal gap along x, then also
-// along z: its Casimir force and moments against the closed forms of the integrals of C / g^4
-// over the rectangle for a gap linear in x (and z). The quadrature's ~1e-8: 1e-7 asserted. The
-// fixed rule misses the force by percents.
+// A plate tilted so that its gap runs from 1 % to 150 % of the nominal gap along x, then along z,
+// then along the diagonal, then along x with the contact's separation holding the gap over an
+// eighth of the plate: its Casimir force and moments against the closed forms of the integrals of
+// C / g^4 over the rectangle for a gap linear in x (or z, or both). Each case takes a branch of
+// the quadrature along the gap's level lines (FrameGapIntegral): chords across the whole plate,
+// chords along x, chords whose ends turn the plate's corners, a range of the gap broken where the
+// separation starts to hold it. The quadrature's ~1e-8: 1e-7 asserted. The fixed rule misses the
+// force by percents.
 TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
   const test::PlateOnFourBeams device;
   const FrameModel model(device.structure);
@@ -318,27 +322,34 @@ TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
   // theta_z = s, theta_x = -t.
   const double low = 0.01 * gap, high = 1.5 * gap, centre = 0.5 * (low + high);
   const double s = (high - low) / side;
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
-  d[uy] = (centre - gap) / l;
-  d[tz] = s;
-  // Along x alone: F = side C / (3 s) [g^-3] and M_z = side / s^2 [-C / (2 g^2) + g_c C / (3 g^3)],
-  // both from high to low.
-  const auto force_x = [&](double g) { return side * c / (3.0 * s * g * g * g); };
-  const auto moment_x = [&](double g) {
+  // Along one side alone: F = side C / (3 s) [g^-3] and the moment about the centre
+  // side / s^2 [-C / (2 g^2) + g_c C / (3 g^3)], both from high to low.
+  const auto force_along = [&](double g) { return side * c / (3.0 * s * g * g * g); };
+  const auto moment_along = [&](double g) {
     return side / (s * s) * (-c / (2.0 * g * g) + centre * c / (3.0 * g * g * g));
   };
-  const double force = force_x(low) - force_x(high);
-  const double moment = moment_x(high) - moment_x(low);
-  Eigen::VectorXd r = evaluate(casimir, d);
-  std::printf("plate tilted along x: force %.3e N, error %.1e; moment error %.1e\n", force,
-              std::abs(r[uy] * f / force - 1.0), std::abs(r[tz] * f * l / moment - 1.0));
-  EXPECT_NEAR(r[uy] * f, force, 1e-7 * force);
-  EXPECT_NEAR(r[tz] * f * l, moment, 1e-7 * std::abs(moment));
-  EXPECT_NEAR(r[tx], 0.0, 1e-12 * std::abs(r[tz]));
-  EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+  const double force = force_along(low) - force_along(high);
+  const double moment = moment_along(high) - moment_along(low);
+  for (const bool along_x : {true, false}) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+    d[uy] = (centre - gap) / l;
+    d[along_x ? tz : tx] = along_x ? s : -s;
+    const Eigen::VectorXd r = evaluate(casimir, d);
+    // The moment of the pressure about z is r[tz] (phi = x), about x -r[tx] (phi = -z).
+    const double turning = along_x ? r[tz] * f * l : -r[tx] * f * l;
+    std::printf("plate tilted along %s: force %.3e N, error %.1e; moment error %.1e\n",
+                along_x ? "x" : "z", force, std::abs(r[uy] * f / force - 1.0),
+                std::abs(turning / moment - 1.0));
+    EXPECT_NEAR(r[uy] * f, force, 1e-7 * force);
+    EXPECT_NEAR(turning, moment, 1e-7 * std::abs(moment));
+    EXPECT_NEAR(r[along_x ? tx : tz], 0.0, 1e-12 * std::abs(turning / (f * l)));
+    EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+  }
 
   // Along the diagonal: the gap's range split between x and z, F = sum over the corners of
   // +-C / (6 s t g^2) (the mixed antiderivative of C / g^4).
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  d[uy] = (centre - gap) / l;
   const double half = 0.5 * (high - low) / side;
   d[tz] = half;
   d[tx] = -half;
@@ -348,12 +359,56 @@ TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
   };
   const double h = 0.5 * side;
   const double diagonal = corner(h, h) - corner(-h, h) - corner(h, -h) + corner(-h, -h);
-  r = evaluate(casimir, d);
+  Eigen::VectorXd r = evaluate(casimir, d);
   std::printf("plate tilted along the diagonal: force error %.1e\n",
               std::abs(r[uy] * f / diagonal - 1.0));
   EXPECT_NEAR(r[uy] * f, diagonal, 1e-7 * diagonal);
   EXPECT_NEAR(r[tz], -r[tx], 1e-9 * std::abs(r[tz]));
   EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+
+  // Along x through the contact plane: where g_c + s x is below the separation, the pressure is
+  // the separation's. F = side (x_s + side/2) p(separation) + side C / (3 s) [g^-3] from high to
+  // the separation, x_s where the gap reaches the separation.
+  FrameGapOptions held_options{gap, {device.plate}};
+  held_options.separation = 0.2 * gap;
+  FrameGapForce<CasimirPressure> held(model, CasimirPressure{}, held_options);
+  d.setZero();
+  d[uy] = (centre - gap) / l;
+  d[tz] = s;
+  const double x_s = (held_options.separation - centre) / s;
+  const double held_force = side * (x_s + h) * CasimirPressure{}.Value(held_options.separation) +
+                            force_along(held_options.separation) - force_along(high);
+  r = evaluate(held, d);
+  std::printf("plate tilted through the contact plane: force error %.1e\n",
+              std::abs(r[uy] * f / held_force - 1.0));
+  EXPECT_NEAR(r[uy] * f, held_force, 1e-7 * held_force);
+}
+
+// The same plate tilted along the diagonal, 1 % of its gap left at one corner: its Casimir force
+// and tangent against central differences of the energy -C / (3 g^3) over the rectangle, in
+// closed form (-C / (6 s t) times the corners' +-1/g); the differences leave ~1e-7: 1e-5 asserted.
+TEST(FrameGapIntegralTest, ATiltedPlatesForceAndTangentAreTheDerivativesOfItsEnergy) {
+  const test::PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const double l = model.units().length, gap = 2e-6, h = 0.5 * device.side;
+  const int plate = model.mesh().body_carrier[0];
+  const int uy = model.CarrierDof(plate, 1), tx = model.CarrierDof(plate, 3),
+            tz = model.CarrierDof(plate, 5);
+  const auto energy = [&](const Eigen::VectorXd& state) {
+    const double centre = gap + state[uy] * l, s = state[tz], t = -state[tx];
+    const auto corner = [&](double x, double z) { return 1.0 / (centre + s * x + t * z); };
+    const double sum = corner(h, h) - corner(-h, h) - corner(h, -h) + corner(-h, -h);
+    return -CasimirPressure::Coefficient() * sum / (6.0 * s * t) / (model.units().force * l);
+  };
+  const double low = 0.01 * gap, high = 1.5 * gap, half = 0.5 * (high - low) / device.side;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  d[uy] = (0.5 * (low + high) - gap) / l;
+  d[tz] = half;
+  d[tx] = -0.8 * half;  // unequal slopes: the chords turn different corners at each end
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{},
+                                         FrameGapOptions{gap, {device.plate}});
+  test::ExpectForceAndTangentMatchDifferences(casimir, d, model.Stiffness().bandwidth(), energy,
+                                              1e-6 * gap / l, 1e-5);
 }
 
 // A state whose gap closes somewhere, or is not finite, is outside the pressure's domain: the

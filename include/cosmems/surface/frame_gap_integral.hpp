@@ -27,8 +27,9 @@ namespace cosmems {
 /// length (phi the Hermite values at xi), on a plate u_y, theta_x and theta_z of its body
 /// (phi = 1, -z, x). A strip is halved, recursively, until its largest gap (at its ends and
 /// midpoint) is at most FrameGapOptions::gap_ratio times its smallest; a plate's gap is linear,
-/// so its extremes are at its corners, and it is halved across its steeper side until they
-/// differ by at most that ratio. Each interval gets the Gauss rule (the tensor rule on a plate).
+/// so its extremes are at its corners; where they differ by more than that ratio, it is integrated
+/// along its gap's level lines, the range of its gap halved as a strip's. Each interval gets the
+/// Gauss rule (a plate within the ratio the tensor rule, a level line the two-point rule).
 /// The force and tangent gather in c's four coefficients, face by face, and reach the
 /// structure's degrees of freedom through B once per face:
 ///   r = sum over faces B sum_points phi p(g) A,   dr/dd = sum B (sum phi p'(g) phi^T A) B^T.
@@ -212,9 +213,9 @@ class FrameGapIntegral {
   // The gap [m] for the coefficients c (internal units) at phi, at least the separation (NaN
   // stays NaN).
   double Gap(const Face& face, const Eigen::Vector4d& c, const Eigen::Vector4d& phi) const {
-    const double gap = face.gap_m + c.dot(phi) * length_m_;
-    return gap < separation_m_ ? separation_m_ : gap;
+    return AtLeastSeparation(face.gap_m + c.dot(phi) * length_m_);
   }
+  double AtLeastSeparation(double gap) const { return gap < separation_m_ ? separation_m_ : gap; }
   // Whether a gap is open and finite: a closed or non-finite one ends the quadrature.
   static bool Open(double gap) { return gap > 0.0 && std::isfinite(gap); }
   // The element's coordinate at the fraction p of the strip.
@@ -286,49 +287,93 @@ class FrameGapIntegral {
   template <typename AtPoint>
   bool VisitPlate(const Face& face, const Eigen::Vector4d& c, AtPoint& at) const {
     const FrameFaces::Plate& plate = geometry_.plates()[face.index];
-    struct Cell {
-      double x0, x1, z0, z1;
-    };
-    // Each halving leaves one cell on the stack: 64 of them reach 2^-32 of a side in each
-    // direction, far below any gap ratio.
-    std::array<Cell, 64> stack;
-    int top = 0;
-    stack[top++] = {plate.x[0], plate.x[1], plate.z[0], plate.z[1]};
-    while (top > 0) {
-      const Cell cell = stack[--top];
-      double low = std::numeric_limits<double>::infinity(), high = 0.0;
-      for (const double x : {cell.x0, cell.x1}) {
-        for (const double z : {cell.z0, cell.z1}) {
-          const double gap = Gap(face, c, PlatePhi(x, z));
-          if (!Open(gap)) return false;
-          low = std::min(low, gap);
-          high = std::max(high, gap);
-        }
-      }
-      if (high > ratio_ * low && top + 2 <= static_cast<int>(stack.size())) {
-        // Across the side along which the gap changes most: c_2 per x, -c_1 per z.
-        if (std::abs(c[2]) * (cell.x1 - cell.x0) >= std::abs(c[1]) * (cell.z1 - cell.z0)) {
-          const double xm = 0.5 * (cell.x0 + cell.x1);
-          stack[top++] = {xm, cell.x1, cell.z0, cell.z1};
-          stack[top++] = {cell.x0, xm, cell.z0, cell.z1};
-        } else {
-          const double zm = 0.5 * (cell.z0 + cell.z1);
-          stack[top++] = {cell.x0, cell.x1, zm, cell.z1};
-          stack[top++] = {cell.x0, cell.x1, cell.z0, zm};
-        }
-        continue;
-      }
-      const double area = (cell.x1 - cell.x0) * (cell.z1 - cell.z0);
+    // The gap is linear, u = u_0 + s_x x + s_z z before the separation holds it, so its extremes
+    // are at the corners.
+    const double u0 = face.gap_m + c[0] * length_m_, slope_x = c[2], slope_z = -c[1];
+    std::array<double, 4> corners{};
+    double low = std::numeric_limits<double>::infinity(), high = 0.0;
+    for (int k = 0; k < 4; ++k) {
+      corners[k] = u0 + slope_x * plate.x[k & 1] + slope_z * plate.z[k >> 1];
+      const double gap = AtLeastSeparation(corners[k]);
+      if (!Open(gap)) return false;
+      low = std::min(low, gap);
+      high = std::max(high, gap);
+    }
+    if (high <= ratio_ * low) {  // the whole plate on the tensor rule: most plates
+      const double area = (plate.x[1] - plate.x[0]) * (plate.z[1] - plate.z[0]);
       for (std::size_t i = 0; i < rule_.points.size(); ++i) {
         for (std::size_t j = 0; j < rule_.points.size(); ++j) {
-          const Eigen::Vector4d phi = PlatePhi(cell.x0 + rule_.points[i] * (cell.x1 - cell.x0),
-                                               cell.z0 + rule_.points[j] * (cell.z1 - cell.z0));
+          const Eigen::Vector4d phi =
+              PlatePhi(plate.x[0] + rule_.points[i] * (plate.x[1] - plate.x[0]),
+                       plate.z[0] + rule_.points[j] * (plate.z[1] - plate.z[0]));
           at(phi, Gap(face, c, phi), rule_.weights[i] * rule_.weights[j] * area);
+        }
+      }
+      return true;
+    }
+    // Along the gap's level lines: the pressure is constant on each, so the plate is one integral
+    // over u, halved as a strip is, of the integrals along the level line of u's chord of the
+    // rectangle. phi is linear along a chord and the tangent's phi phi^T quadratic: two Gauss
+    // points on the chord are exact. Cells halved in x and z instead refine around the whole line
+    // where the plate nears the substrate: measured, a tilted shuttle 20 nm off it took ~120 cells
+    // of 16 points an evaluation. u is the level's coordinate along the side whose gap changes
+    // most (p, its slope k_p), the chord's along the other (q, k_q): x = (u - u_0 - k_q q) / k_p.
+    const bool along_x = std::abs(slope_x) * (plate.x[1] - plate.x[0]) >=
+                         std::abs(slope_z) * (plate.z[1] - plate.z[0]);
+    const double k_p = along_x ? slope_x : slope_z, k_q = along_x ? slope_z : slope_x;
+    const std::array<double, 2>& p_side = along_x ? plate.x : plate.z;
+    const std::array<double, 2>& q_side = along_x ? plate.z : plate.x;
+    auto at_level = [&](double u, double weight) {
+      // The chord: q within its side where p stays within its own.
+      double q0 = q_side[0], q1 = q_side[1];
+      if (k_q != 0.0) {
+        const double qa = (u - u0 - k_p * p_side[0]) / k_q, qb = (u - u0 - k_p * p_side[1]) / k_q;
+        q0 = std::max(q0, std::min(qa, qb));
+        q1 = std::min(q1, std::max(qa, qb));
+      }
+      if (!(q1 > q0)) return;
+      for (const double t : {0.5 - kChordPoint, 0.5 + kChordPoint}) {
+        const double q = q0 + t * (q1 - q0), p = (u - u0 - k_q * q) / k_p;
+        const Eigen::Vector4d phi = along_x ? PlatePhi(p, q) : PlatePhi(q, p);
+        at(phi, Gap(face, c, phi), 0.5 * (q1 - q0) * weight);
+      }
+    };
+    // Breaks where the chord's ends turn a corner and where the separation starts to hold the
+    // gap: between them the chord's moments are polynomials of u.
+    std::array<double, 5> breaks{};
+    std::copy(corners.begin(), corners.end(), breaks.begin());
+    std::sort(breaks.begin(), breaks.begin() + 4);
+    int count = 4;
+    if (separation_m_ > breaks[0] && separation_m_ < breaks[3]) breaks[count++] = separation_m_;
+    std::sort(breaks.begin(), breaks.begin() + count);
+    const double per_u = 1.0 / std::abs(k_p);  // dA = du dq / |k_p|
+    struct Interval {
+      double a, b;
+    };
+    std::array<Interval, 48> stack;  // as on a strip: 2^-40 of the range is far below any ratio
+    for (int piece = 0; piece + 1 < count; ++piece) {
+      if (!(breaks[piece + 1] > breaks[piece])) continue;
+      int top = 0;
+      stack[top++] = {breaks[piece], breaks[piece + 1]};
+      while (top > 0) {
+        const Interval i = stack[--top];
+        const double ga = AtLeastSeparation(i.a), gb = AtLeastSeparation(i.b);
+        if (gb > ratio_ * ga && top + 2 <= static_cast<int>(stack.size())) {
+          const double mid = 0.5 * (i.a + i.b);
+          stack[top++] = {mid, i.b};
+          stack[top++] = {i.a, mid};
+          continue;
+        }
+        for (std::size_t k = 0; k < rule_.points.size(); ++k) {
+          at_level(i.a + rule_.points[k] * (i.b - i.a), rule_.weights[k] * (i.b - i.a) * per_u);
         }
       }
     }
     return true;
   }
+
+  // The two-point Gauss rule's points on [0, 1] are 1/2 -+ this.
+  static constexpr double kChordPoint = 0.28867513459481288225;  // 1 / (2 sqrt 3)
 
   FrameFaces geometry_;
   double length_m_;
