@@ -313,11 +313,12 @@ class FrameGapIntegral {
     }
     // Along the gap's level lines: the pressure is constant on each, so the plate is one integral
     // over u, halved as a strip is, of the integrals along the level line of u's chord of the
-    // rectangle. phi is linear along a chord and the tangent's phi phi^T quadratic: two Gauss
-    // points on the chord are exact. Cells halved in x and z instead refine around the whole line
-    // where the plate nears the substrate: measured, a tilted shuttle 20 nm off it took ~120 cells
-    // of 16 points an evaluation. u is the level's coordinate along the side whose gap changes
-    // most (p, its slope k_p), the chord's along the other (q, k_q): x = (u - u_0 - k_q q) / k_p.
+    // rectangle. phi is linear along a chord and the tangent's phi phi^T quadratic: for a
+    // pressure of the gap alone, two Gauss points on the chord are exact. Cells halved in x and z
+    // instead refine around the whole line where the plate nears the substrate: measured, a tilted
+    // shuttle 20 nm off it took ~120 cells of 16 points an evaluation. u is the level's coordinate
+    // along the side whose gap changes most (p, its slope k_p), the chord's along the other (q,
+    // k_q): p = (u - u_0 - k_q q) / k_p.
     const bool along_x = std::abs(slope_x) * (plate.x[1] - plate.x[0]) >=
                          std::abs(slope_z) * (plate.z[1] - plate.z[0]);
     const double k_p = along_x ? slope_x : slope_z, k_q = along_x ? slope_z : slope_x;
