@@ -243,9 +243,7 @@ void BM_FixedWorkTick(benchmark::State& state) {
   benchmark::DoNotOptimize(a);
   benchmark::DoNotOptimize(b);
   TimeTicks(state, [&] {
-    for (long round = 0; round < rounds; ++round) {
-      for (double& x : chain) x = x * a + b;
-    }
+    bench::MultiplyAddChains(chain, a, b, rounds);
     benchmark::DoNotOptimize(chain.data());
     return true;
   });
