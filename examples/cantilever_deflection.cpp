@@ -1,6 +1,8 @@
 // The paper's reference cantilever (Si, 200 x 20 x 2 um) under a growing tip force: deflection,
 // root stress and how close the tip comes to a substrate 2 um below.
-#include <cosmems/cosmems.hpp>
+#include <cosmems/analysis/beam_field.hpp>
+#include <cosmems/analysis/static_analysis.hpp>
+#include <cosmems/beam/beam_model.hpp>
 #include <cstdio>
 
 int main() {

@@ -1,7 +1,11 @@
 // Tang, Nguyen and Howe's folded-flexure resonator built in C++ from its design parameters: its
 // stiffness along x against 24 E I / L^3, its lowest modes with the mass each moves, and its
 // shuttle ringing under the same pull applied as a step.
-#include <cosmems/cosmems.hpp>
+#include <cosmems/analysis/frame_modal_analysis.hpp>
+#include <cosmems/analysis/frame_static_analysis.hpp>
+#include <cosmems/analysis/frame_transient_analysis.hpp>
+#include <cosmems/structure/folded_flexure.hpp>
+#include <cosmems/structure/frame_model.hpp>
 #include <cstdio>
 
 int main() {

@@ -1,6 +1,7 @@
 // The lowest vibration modes of the paper's microbridge (Si, 100 x 20 x 2 um, clamped-clamped)
 // in 3-D, and how the power-series order changes them on a coarse mesh.
-#include <cosmems/cosmems.hpp>
+#include <cosmems/analysis/modal_analysis.hpp>
+#include <cosmems/beam/beam_model.hpp>
 #include <cstdio>
 
 int main() {

@@ -256,32 +256,15 @@ class FrameGapIntegral {
       }
       return true;
     }
-    // Depth-first halving with a fixed stack, each interval with its ends' gaps: 2^-40 of an
-    // element is far below any gap ratio.
-    struct Interval {
-      double a, b, ga, gb;
+    // Halved from its two halves, whose gaps are known.
+    const auto gap_at = [&](double xi) { return Gap(face, c, StripPhi(xi)); };
+    const auto point = [&](double xi, double weight) {
+      const Eigen::Vector4d phi = StripPhi(xi);
+      at(phi, Gap(face, c, phi), weight * area_per_xi);
     };
-    std::array<Interval, 48> stack;
-    int top = 0;
     const double m = 0.5 * (strip.lo + strip.hi);
-    stack[top++] = {m, strip.hi, g_mid, g_hi};
-    stack[top++] = {strip.lo, m, g_lo, g_mid};
-    while (top > 0) {
-      const Interval i = stack[--top];
-      const double mid = 0.5 * (i.a + i.b), gm = Gap(face, c, StripPhi(mid));
-      if (!Open(gm)) return false;
-      const double lo = std::min({i.ga, gm, i.gb}), hi = std::max({i.ga, gm, i.gb});
-      if (hi > ratio_ * lo && top + 2 <= static_cast<int>(stack.size())) {
-        stack[top++] = {mid, i.b, gm, i.gb};
-        stack[top++] = {i.a, mid, i.ga, gm};
-        continue;
-      }
-      for (std::size_t k = 0; k < n; ++k) {
-        const Eigen::Vector4d phi = StripPhi(i.a + rule_.points[k] * (i.b - i.a));
-        at(phi, Gap(face, c, phi), rule_.weights[k] * (i.b - i.a) * area_per_xi);
-      }
-    }
-    return true;
+    return Halving(strip.lo, m, g_lo, g_mid, gap_at, point) &&
+           Halving(m, strip.hi, g_mid, g_hi, gap_at, point);
   }
 
   template <typename AtPoint>
@@ -348,26 +331,40 @@ class FrameGapIntegral {
     if (separation_m_ > breaks[0] && separation_m_ < breaks[3]) breaks[count++] = separation_m_;
     std::sort(breaks.begin(), breaks.begin() + count);
     const double per_u = 1.0 / std::abs(k_p);  // dA = du dq / |k_p|
-    struct Interval {
-      double a, b;
-    };
-    std::array<Interval, 48> stack;  // as on a strip: 2^-40 of the range is far below any ratio
+    const auto gap_at = [&](double u) { return AtLeastSeparation(u); };
+    const auto point = [&](double u, double weight) { at_level(u, weight * per_u); };
     for (int piece = 0; piece + 1 < count; ++piece) {
-      if (!(breaks[piece + 1] > breaks[piece])) continue;
-      int top = 0;
-      stack[top++] = {breaks[piece], breaks[piece + 1]};
-      while (top > 0) {
-        const Interval i = stack[--top];
-        const double ga = AtLeastSeparation(i.a), gb = AtLeastSeparation(i.b);
-        if (gb > ratio_ * ga && top + 2 <= static_cast<int>(stack.size())) {
-          const double mid = 0.5 * (i.a + i.b);
-          stack[top++] = {mid, i.b};
-          stack[top++] = {i.a, mid};
-          continue;
-        }
-        for (std::size_t k = 0; k < rule_.points.size(); ++k) {
-          at_level(i.a + rule_.points[k] * (i.b - i.a), rule_.weights[k] * (i.b - i.a) * per_u);
-        }
+      const double a = breaks[piece], b = breaks[piece + 1];
+      if (b > a) Halving(a, b, gap_at(a), gap_at(b), gap_at, point);
+    }
+    return true;
+  }
+
+  // The Gauss rule over [a, b], whose ends' gaps are ga and gb: point(x, weight) at each point of
+  // each piece, [a, b] halved depth-first until the largest of a piece's gaps at its ends and
+  // midpoint (gap_at) is at most ratio_ times its smallest. A fixed stack: 2^-40 of the range is
+  // far below any ratio. False where a midpoint's gap is closed.
+  template <typename GapAt, typename AtPoint>
+  bool Halving(double a, double b, double ga, double gb, const GapAt& gap_at,
+               const AtPoint& point) const {
+    struct Interval {
+      double a, b, ga, gb;
+    };
+    std::array<Interval, 48> stack;
+    int top = 0;
+    stack[top++] = {a, b, ga, gb};
+    while (top > 0) {
+      const Interval i = stack[--top];
+      const double mid = 0.5 * (i.a + i.b), gm = gap_at(mid);
+      if (!Open(gm)) return false;
+      const double lo = std::min({i.ga, gm, i.gb}), hi = std::max({i.ga, gm, i.gb});
+      if (hi > ratio_ * lo && top + 2 <= static_cast<int>(stack.size())) {
+        stack[top++] = {mid, i.b, gm, i.gb};
+        stack[top++] = {i.a, mid, i.ga, gm};
+        continue;
+      }
+      for (std::size_t k = 0; k < rule_.points.size(); ++k) {
+        point(i.a + rule_.points[k] * (i.b - i.a), rule_.weights[k] * (i.b - i.a));
       }
     }
     return true;
