@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "cosmems/analysis/beam_stepper_factory.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_loader.hpp"

@@ -4,6 +4,7 @@
 #include <iomanip>
 
 #include "cosmems/analysis/frame_modal_analysis.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/structure/frame_stretching_force.hpp"
 #include "csv_file.hpp"

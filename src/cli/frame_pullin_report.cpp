@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "comb_output.hpp"
+#include "cosmems/analysis/comb_drive_force.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "frame_solution_output.hpp"

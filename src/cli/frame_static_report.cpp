@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "comb_output.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"

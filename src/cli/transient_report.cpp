@@ -6,7 +6,10 @@
 #include <string>
 
 #include "contact_report.hpp"
+#include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
+#include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/frame_conversion.hpp"

@@ -1,5 +1,7 @@
 #include "scene_fuzz_input.hpp"
 
+#include <cosmems/analysis/frame_pullin_analysis.hpp>
+#include <cosmems/analysis/frame_static_analysis.hpp>
 #include <cosmems/beam/beam_model.hpp>
 #include <cosmems/rod/cosserat_rod.hpp>
 #include <cosmems/scene/frame_conversion.hpp>

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cosmems/analysis/frame_load_case.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/beam/element_loads.hpp"
 #include "cosmems/beam/force_sum.hpp"
@@ -17,20 +18,6 @@
 #include "cosmems/structure/frame_model.hpp"
 
 namespace cosmems {
-
-/// A force and a moment at a node of a frame or at a body's centre, in SI, global axes.
-struct FramePointLoad {
-  int node = -1;                                     ///< a description node, or -1
-  int body = -1;                                     ///< a body (at its centre), when node is -1
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< N
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< N m
-};
-
-/// Static loads on a frame, in SI.
-struct FrameLoadCase {
-  std::vector<FramePointLoad> points;
-  Eigen::Vector3d distributed = Eigen::Vector3d::Zero();  ///< N/m on every member, global axes
-};
 
 /// What an anchor exerts on the structure at its node (global axes, SI; the moment about the
 /// node). With the loads it balances the structure.
@@ -57,170 +44,43 @@ struct FrameStaticSolution {
 /// The reduced load vector (internal units) of a frame load case: point loads through the
 /// motion of their node or body, the distributed load by each element's consistent loads.
 /// Throws std::invalid_argument for a non-finite value or an entry outside the structure.
-inline Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase& loads) {
-  const UnitSystem& units = model.units();
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.FreeDofCount());
-  for (std::size_t i = 0; i < loads.points.size(); ++i) {
-    const FramePointLoad& load = loads.points[i];
-    const std::string where = "loads.points[" + std::to_string(i) + "]";
-    for (int k = 0; k < 3; ++k) {
-      RequireFinite(where + ".force", load.force[k]);
-      RequireFinite(where + ".moment", load.moment[k]);
-    }
-    FrameModel::Motion l;
-    l << load.force / units.force, load.moment / units.Moment();
-    if (load.node >= 0 && load.node < static_cast<int>(model.description().nodes.size())) {
-      model.AddNodeLoad(load.node, l, f);
-    } else if (load.body >= 0 && load.body < static_cast<int>(model.description().bodies.size())) {
-      model.AddCarrierLoad(model.mesh().body_carrier[load.body], l, f);
-    } else {
-      throw std::invalid_argument(where + ": names no node or body of the structure");
-    }
-  }
-  for (int k = 0; k < 3; ++k) RequireFinite("loads.distributed", loads.distributed[k]);
-  if (!loads.distributed.isZero(0.0)) {
-    for (int e = 0; e < model.ElementCount(); ++e) {
-      const FrameMesh::Element& element = model.mesh().elements[e];
-      const Eigen::Vector3d q = element.axes * loads.distributed / units.ForcePerLength();
-      const ElementLoads local =
-          UniformElementLoads(model.bases(), model.elements()[e].properties().length, q);
-      const ElementLoads carried = model.ElementTransform(e).transpose() * local;
-      for (int a = 0; a < 12; ++a) {
-        if (model.ElementDofs(e)[a] >= 0) f[model.ElementDofs(e)[a]] += carried[a];
-      }
-    }
-  }
-  return f;
-}
+Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase& loads);
 
 namespace internal {
 
 // Each element's end forces in its own axes, K u + r(u) - f_q (internal units; r the shares of
 // the nonlinear forces given: stretching, a gap pressure): the reactions, the axial forces and
 // the stresses all come from them.
-inline FrameModel::ElementVector ElementEndForces(
-    const FrameModel& model, const Eigen::VectorXd& d, int e, const Eigen::Vector3d& distributed,
-    const std::vector<FrameElementForce*>& forces = {}) {
-  const FrameModel::ElementVector u = model.LocalDisplacement(d, e);
-  FrameModel::ElementVector s = model.LocalStiffness(e) * u;
-  for (const FrameElementForce* force : forces) s += force->LocalForce(d, e);
-  if (!distributed.isZero(0.0)) {
-    const Eigen::Vector3d q =
-        model.mesh().elements[e].axes * distributed / model.units().ForcePerLength();
-    s -= UniformElementLoads(model.bases(), model.elements()[e].properties().length, q);
-  }
-  return s;
-}
+FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen::VectorXd& d, int e,
+                                           const Eigen::Vector3d& distributed,
+                                           const std::vector<FrameElementForce*>& forces = {});
 
 }  // namespace internal
 
 /// The reduced displacement d (internal units) of K d = f, the linear statics alone. A structure
 /// left free to move (a mechanism) has a singular K: Status::kNotPositiveDefinite and d zero,
 /// never a NaN. `solver_kind`: the factorisation (SpdSolver::Choose by default).
-inline Status SolveFrameDisplacement(const FrameModel& model, const Eigen::VectorXd& f,
-                                     Eigen::VectorXd& d,
-                                     SpdSolverKind solver_kind = SpdSolverKind::kAuto) {
-  SpdSolver solver;
-  Status status = solver.Compute(model.Stiffness(), solver_kind);
-  d = f;
-  if (status == Status::kOk) solver.SolveInPlace(d);
-  if (status == Status::kOk && !d.allFinite()) status = Status::kNonFinite;
-  if (status != Status::kOk) d.setZero();
-  return status;
-}
+Status SolveFrameDisplacement(const FrameModel& model, const Eigen::VectorXd& f, Eigen::VectorXd& d,
+                              SpdSolverKind solver_kind = SpdSolverKind::kAuto);
 
 namespace internal {
 
 // The motions (SI) of every node and body of the displacement out.displacement.
-inline void RecoverFrameMotions(const FrameModel& model, FrameStaticSolution& out) {
-  const Eigen::VectorXd& d = out.displacement;
-  auto si = [&](FrameModel::Motion m) {
-    m.head<3>() *= model.units().length;
-    return m;
-  };
-  for (std::size_t n = 0; n < model.description().nodes.size(); ++n) {
-    out.nodes.push_back(si(model.NodeMotion(d, static_cast<int>(n))));
-  }
-  for (int c : model.mesh().body_carrier) out.bodies.push_back(si(model.CarrierMotion(d, c)));
-}
+void RecoverFrameMotions(const FrameModel& model, FrameStaticSolution& out);
 
 // The motions of every node and body, the largest deflection toward the substrate, the members'
 // largest stress and axial force and the reactions of the solved displacement out.displacement
 // (with the nonlinear forces' shares of the end forces).
-inline void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
-                               const std::vector<FrameElementForce*>& forces,
-                               FrameStaticSolution& out) {
-  const UnitSystem& units = model.units();
-  const Eigen::VectorXd& d = out.displacement;
-  const StructureDescription& s = model.description();
-  RecoverFrameMotions(model, out);
-
-  // Toward the substrate: every mesh node, and every corner of every body.
-  for (int n = 0; n < static_cast<int>(model.mesh().nodes.size()); ++n) {
-    out.max_deflection = std::max(out.max_deflection, -model.NodeMotion(d, n)[1] * units.length);
-  }
-  for (std::size_t b = 0; b < s.bodies.size(); ++b) {
-    const FrameModel::Motion m = out.bodies[b];
-    for (int corner = 0; corner < 8; ++corner) {
-      const Eigen::Vector3d r(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5,
-                              corner & 4 ? 0.5 : -0.5);
-      const Eigen::Vector3d u = m.head<3>() + m.tail<3>().cross(r.cwiseProduct(s.bodies[b].size));
-      out.max_deflection = std::max(out.max_deflection, -u.y());
-    }
-  }
-
-  // Element end forces: stresses, axial forces, and what the anchored nodes receive.
-  std::vector<FrameModel::Motion> resisted(s.nodes.size(), FrameModel::Motion::Zero());
-  for (int e = 0; e < model.ElementCount(); ++e) {
-    const FrameModel::ElementVector end = ElementEndForces(model, d, e, loads.distributed, forces);
-    const ElementProperties& p = model.elements()[e].properties();
-    for (int k = 0; k < 2; ++k) {
-      const double axial = (k == 0 ? -end[0] : end[6]) * units.force;
-      if (std::abs(axial) > std::abs(out.axial_force_n)) out.axial_force_n = axial;
-      const double normal = std::abs(end[6 * k]) / p.area +
-                            std::abs(end[6 * k + 5]) * p.half_thickness / p.second_moment_z +
-                            std::abs(end[6 * k + 4]) * p.half_width / p.second_moment_y;
-      // Saint-Venant's largest shear, mid-way along the long side: T c / J with c the short side.
-      const double shear = std::abs(end[6 * k + 3]) * 2.0 *
-                           std::min(p.half_thickness, p.half_width) / p.torsion_constant;
-      const double stress = std::sqrt(normal * normal + 3.0 * shear * shear);
-      out.max_stress_pa = std::max(out.max_stress_pa, stress * units.Stress());
-    }
-    const FrameMesh::Element& element = model.mesh().elements[e];
-    const int ends[2] = {element.from, element.to};
-    for (int k = 0; k < 2; ++k) {
-      if (ends[k] >= static_cast<int>(s.nodes.size())) continue;
-      resisted[ends[k]].head<3>() += element.axes.transpose() * end.segment<3>(6 * k);
-      resisted[ends[k]].tail<3>() += element.axes.transpose() * end.segment<3>(6 * k + 3);
-    }
-  }
-  for (const FramePointLoad& load : loads.points) {
-    if (load.node < 0) continue;
-    resisted[load.node].head<3>() -= load.force / units.force;
-    resisted[load.node].tail<3>() -= load.moment / units.Moment();
-  }
-  for (std::size_t n = 0; n < s.nodes.size(); ++n) {
-    const AnchorMask& anchor = s.nodes[n].anchor;
-    if (std::none_of(anchor.begin(), anchor.end(), [](bool fixed) { return fixed; })) continue;
-    FrameReaction reaction{static_cast<int>(n), resisted[n].head<3>() * units.force,
-                           resisted[n].tail<3>() * units.Moment()};
-    out.reactions.push_back(reaction);
-  }
-}
+void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
+                        const std::vector<FrameElementForce*>& forces, FrameStaticSolution& out);
 
 }  // namespace internal
 
 /// Linear statics of a frame, K u = f, with the nodes' and bodies' motions, the reactions at
 /// the anchors and the members' largest stress and axial force (SolveFrameDisplacement's
 /// statuses).
-inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
-                                            SpdSolverKind solver_kind = SpdSolverKind::kAuto) {
-  FrameStaticSolution out;
-  out.status = SolveFrameDisplacement(model, AssembleFrameLoads(model, loads), out.displacement,
-                                      solver_kind);
-  if (out.status == Status::kOk) internal::RecoverFrameStatic(model, loads, {}, out);
-  return out;
-}
+FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
+                                     SpdSolverKind solver_kind = SpdSolverKind::kAuto);
 
 /// Statics of a frame under nonlinear forces, K u + r(u) + lambda r_s(u) = lambda f (Nonlinear-
 /// StaticSolve: adaptive load steps, Newton with the consistent tangent), r the sum of `forces`
@@ -229,23 +89,10 @@ inline FrameStaticSolution SolveFrameStatic(const FrameModel& model, const Frame
 /// SolveFrameStatic's; the end forces, reactions and axial forces carry each force's share. A
 /// state the solve cannot reach is Status::kNotConverged, with no results but the status (a
 /// device pulled past its pull-in voltage has none).
-inline FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
-                                                     const std::vector<FrameElementForce*>& forces,
-                                                     const FrameLoadCase& loads,
-                                                     FrameElementForce* ramped = nullptr,
-                                                     const NonlinearStaticOptions& options = {}) {
-  FrameStaticSolution out;
-  ForceSum sum;
-  for (FrameElementForce* force : forces) sum.Add(*force);
-  NonlinearStaticSolve solve(model.Stiffness(), sum, options, ramped);
-  const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
-  out.status = solution.status;
-  if (out.status != Status::kOk) return out;
-  out.displacement = solution.displacement;
-  std::vector<FrameElementForce*> all = forces;
-  if (ramped != nullptr) all.push_back(ramped);
-  internal::RecoverFrameStatic(model, loads, all, out);
-  return out;
-}
+FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
+                                              const std::vector<FrameElementForce*>& forces,
+                                              const FrameLoadCase& loads,
+                                              FrameElementForce* ramped = nullptr,
+                                              const NonlinearStaticOptions& options = {});
 
 }  // namespace cosmems

@@ -7,6 +7,7 @@
 
 #include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/fold_search.hpp"
+#include "cosmems/analysis/pullin_options.hpp"
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/beam/output_point.hpp"
@@ -18,14 +19,6 @@
 #include "cosmems/time/newton_stats.hpp"
 
 namespace cosmems {
-
-struct PullInOptions {
-  GapSpan electrode;  ///< the gap and the electrode's extent [m] along the beam
-  bool fringing = false;
-  double control_x = 0.0;  ///< m: where the travel is imposed (the tip, or a bridge's midspan)
-  FoldOptions fold;
-  NewtonOptions newton;
-};
 
 struct PullInResult {
   Status status = Status::kOk;

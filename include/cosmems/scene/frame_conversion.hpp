@@ -1,11 +1,15 @@
 #pragma once
 
-#include "cosmems/analysis/comb_drive_analysis.hpp"
-#include "cosmems/analysis/frame_pullin_analysis.hpp"
-#include "cosmems/analysis/frame_static_analysis.hpp"
-#include "cosmems/analysis/frame_transient_analysis.hpp"
+#include <vector>
+
+#include "cosmems/analysis/comb_drive.hpp"
+#include "cosmems/analysis/frame_load_case.hpp"
+#include "cosmems/analysis/frame_pullin_options.hpp"
+#include "cosmems/analysis/frame_record_point.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/structure/frame_model.hpp"
 #include "cosmems/structure/structure_description.hpp"
+#include "cosmems/time/voltage_drive.hpp"
 
 namespace cosmems {
 

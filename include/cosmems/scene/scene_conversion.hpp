@@ -1,7 +1,7 @@
 #pragma once
 
-#include "cosmems/analysis/pullin_analysis.hpp"
-#include "cosmems/analysis/transient_analysis.hpp"
+#include "cosmems/analysis/pullin_options.hpp"
+#include "cosmems/analysis/transient_options.hpp"
 #include "cosmems/beam/beam_description.hpp"
 #include "cosmems/beam/load_case.hpp"
 #include "cosmems/core/material.hpp"

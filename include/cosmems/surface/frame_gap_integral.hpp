@@ -335,7 +335,7 @@ class FrameGapIntegral {
     const auto point = [&](double u, double weight) { at_level(u, weight * per_u); };
     for (int piece = 0; piece + 1 < count; ++piece) {
       const double a = breaks[piece], b = breaks[piece + 1];
-      if (b > a) Halving(a, b, gap_at(a), gap_at(b), gap_at, point);
+      if (b > a && !Halving(a, b, gap_at(a), gap_at(b), gap_at, point)) return false;
     }
     return true;
   }
