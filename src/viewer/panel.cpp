@@ -67,7 +67,7 @@ PanelActions Panel::Draw(const PanelStatus& status, const LivePlots& plots, Disp
   if (ImGui::CollapsingHeader("View")) {
     float exaggeration = static_cast<float>(space.exaggeration);
     if (ImGui::SliderFloat("vertical scale", &exaggeration, 1.0f, 20.0f, "x %.1f")) {
-      space.exaggeration = exaggeration;
+      space.exaggeration = static_cast<double>(exaggeration);
     }
   }
   if (!status.error.empty()) {
@@ -171,7 +171,9 @@ bool Panel::DrawModel() {
   ImGui::TextDisabled("integrator: generalised-alpha, %d steps a tick", draft_.physics.substeps);
   done |= EditInt("steps a tick", draft_.physics.substeps, 1, 100);
   float rho = static_cast<float>(draft_.physics.rho_inf);
-  if (ImGui::SliderFloat("rho_inf", &rho, 0.0f, 1.0f, "%.2f")) draft_.physics.rho_inf = rho;
+  if (ImGui::SliderFloat("rho_inf", &rho, 0.0f, 1.0f, "%.2f")) {
+    draft_.physics.rho_inf = static_cast<double>(rho);
+  }
   done |= ImGui::IsItemDeactivatedAfterEdit();
   return done;
 }

@@ -198,12 +198,13 @@ class ViewerApp {
   void HandleMouse(const Viewport& viewport) {
     const ImGuiIO& io = ImGui::GetIO();
     const bool in_view = !io.WantCaptureMouse;
-    if (in_view && io.MouseWheel != 0.0f) camera_.Zoom(io.MouseWheel);
+    if (in_view && io.MouseWheel != 0.0f) camera_.Zoom(static_cast<double>(io.MouseWheel));
     if (in_view && ImGui::IsMouseDown(ImGuiMouseButton_Right)) {
-      camera_.Orbit(io.MouseDelta.x, io.MouseDelta.y);
+      camera_.Orbit(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y));
     }
     if (in_view && ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
-      camera_.Pan(io.MouseDelta.x, io.MouseDelta.y, viewport);
+      camera_.Pan(static_cast<double>(io.MouseDelta.x), static_cast<double>(io.MouseDelta.y),
+                  viewport);
     }
     LiveTrajectory* hand = session_->hand();
     if (!hand) return;

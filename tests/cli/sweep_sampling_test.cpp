@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -153,10 +154,12 @@ TEST(SweepPlanTest, LatinHypercubeAndSobolDrawsAreStratified) {
   }
 }
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 // The draws' mean and variance against the distribution's, within four standard errors: the
 // sample mean errs by sigma / sqrt(n), the sample variance by about var sqrt((kurtosis - 1) / n).
 void ExpectMoments(const std::string& spec, SweepMethod method, double mean, double variance,
-                   double kurtosis, double lo = -INFINITY, double hi = INFINITY) {
+                   double kurtosis, double lo = -kInfinity, double hi = kInfinity) {
   const int n = 20000;
   const SweepPlan plan({SweepParameter("x", spec)}, method, n, 2026);
   double sum = 0.0, squares = 0.0;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -155,7 +156,7 @@ TEST(BuiltInTrajectoryTest, InvalidShapesNameTheField) {
   const Case cases[] = {
       {"start_m", [](MotionShape& s) { s.start_m.x() = std::nan(""); }},
       {"depth_m", [](MotionShape& s) { s.depth_m = -0.01; }},
-      {"sweep_m", [](MotionShape& s) { s.sweep_m = INFINITY; }},
+      {"sweep_m", [](MotionShape& s) { s.sweep_m = std::numeric_limits<double>::infinity(); }},
       {"period_s", [](MotionShape& s) { s.period_s = 0.0; }},
       {"cycles", [](MotionShape& s) { s.cycles = 0; }},
   };

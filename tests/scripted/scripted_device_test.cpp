@@ -488,7 +488,9 @@ class FixedDuration final : public Trajectory {
 TEST(ScriptedDeviceTest, RejectsUnusableScriptsAndOptions) {
   EXPECT_THROW(ScriptedDevice(nullptr), std::invalid_argument);
   EXPECT_THROW(ScriptedDevice(std::make_unique<FixedDuration>(-1.0)), std::invalid_argument);
-  EXPECT_THROW(ScriptedDevice(std::make_unique<FixedDuration>(INFINITY)), std::invalid_argument);
+  EXPECT_THROW(
+      ScriptedDevice(std::make_unique<FixedDuration>(std::numeric_limits<double>::infinity())),
+      std::invalid_argument);
   ScriptedOptions options = WithClock(ScriptedClock::kManual, HandModel::kSpring);
   options.spring.stiffness_n_per_m = 1e6;  // beyond 4 m / h^2 = 1.8e5 N/m at 1 kHz
   EXPECT_THROW(ScriptedDevice(Press(), options), std::invalid_argument);

@@ -19,6 +19,14 @@
 namespace cosmems::viewer {
 namespace {
 
+// Vertex v's position, and its normal: the mesh's floats from 6 v and 6 v + 3.
+Eigen::Vector3d Vertex(const Mesh& mesh, int v) {
+  return Eigen::Map<const Eigen::Vector3f>(&mesh.vertices[6 * v]).cast<double>();
+}
+Eigen::Vector3d Normal(const Mesh& mesh, int v) {
+  return Eigen::Map<const Eigen::Vector3f>(&mesh.vertices[6 * v + 3]).cast<double>();
+}
+
 TEST(OrbitCameraTest, APixelsRayPassesThroughThePointsThatProjectOntoIt) {
   OrbitCamera camera(Eigen::Vector3d(110.0, 0.0, 0.0), 320.0, 0.5, 0.3);
   camera.Orbit(40.0, -25.0);
@@ -65,8 +73,7 @@ TEST(BeamMeshTest, TheStraightBeamIsItsBox) {
   Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d high = -low;
   for (int v = 0; v < mesh.VertexCount(); ++v) {
-    const Eigen::Vector3d p(mesh.vertices[6 * v], mesh.vertices[6 * v + 1],
-                            mesh.vertices[6 * v + 2]);
+    const Eigen::Vector3d p = Vertex(mesh, v);
     low = low.cwiseMin(p);
     high = high.cwiseMax(p);
   }
@@ -85,20 +92,14 @@ TEST(BeamMeshTest, TheEndFaceFollowsTheTipAndTurnsWithItsSlope) {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
   const int first = mesh.VertexCount() - 6;
   for (int v : {first, first + 1, first + 2, first + 4}) {  // the quad's four corners
-    centre += 0.25 * Eigen::Vector3d(mesh.vertices[6 * v], mesh.vertices[6 * v + 1],
-                                     mesh.vertices[6 * v + 2]);
+    centre += 0.25 * Vertex(mesh, v);
   }
   EXPECT_NEAR(centre.x(), 200.0, 1e-4);
   EXPECT_NEAR(centre.y(), 5.0 * -2.0, 1e-4);
-  const Eigen::Vector3d normal(mesh.vertices[6 * first + 3], mesh.vertices[6 * first + 4],
-                               mesh.vertices[6 * first + 5]);
+  const Eigen::Vector3d normal = Normal(mesh, first);
   const Eigen::Vector3d tangent =
       Eigen::Vector3d(1.0, 5.0 * 1.5 * tip_w / 200e-6, 0.0).normalized();
   EXPECT_TRUE(normal.isApprox(tangent, 1e-6));
-}
-
-Eigen::Vector3d Vertex(const Mesh& mesh, int v) {
-  return Eigen::Vector3d(mesh.vertices[6 * v], mesh.vertices[6 * v + 1], mesh.vertices[6 * v + 2]);
 }
 
 // A hexahedron's six faces of two triangles: 36 vertices, its upper face (corners 2, 6, 7, 3:
