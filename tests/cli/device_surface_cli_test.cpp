@@ -108,6 +108,22 @@ TEST(DeviceSurfaceCliTest, TheContactHoldsThePlatePulledInAtRest) {
   }
 }
 
+// Under the hand at 20 V, past the plate's pull-in voltage (13.1 V), with the default separation
+// (a hundredth of the gap, where the electrode's pull is steepest): the plate snaps onto the
+// contact plane and lies there while the script presses it, and every tick of the second
+// converges. A tick that failed would leave the structure where it was and the force to the
+// safety layer's ramp.
+TEST(DeviceSurfaceCliTest, ThePlatePulledInUnderTheHandLandsInEveryTick) {
+  const nlohmann::json haptic = RunJson(
+      {"serpentine-pullin", "--set", "analysis.type=\"haptic\"", "--set", "analysis.duration=1.0",
+       "--set", "effects.electrostatic.voltage=20.0", "--set", "effects.contact.enabled=true"});
+  ASSERT_EQ(haptic["status"], "ok");
+  EXPECT_EQ(haptic["ticks"].get<int>(), 1001);
+  EXPECT_EQ(haptic["physics"]["failed_ticks"].get<int>(), 0);
+  EXPECT_GE(haptic["contact_events"]["contacts"].get<int>(), 1);
+  EXPECT_EQ(haptic["contact"]["state"], "contact");
+}
+
 // A 20 V step, past the plate's pull-in voltage (13.1 V), snaps it down: with no floor the step
 // that would cross the gap fails (exit 3, its matrix indefinite); with the contact the
 // plate lands on the contact plane, the separation (0.2 um) above the substrate, and lies there
