@@ -175,24 +175,30 @@ BENCHMARK(BM_TouchedBeamTick)
 // force's quadrature halves a face until its gap varies by at most `gap_ratio_pct` / 100 over
 // it (FrameGapOptions::gap_ratio; 125 the default, 10000 no halving): what its accuracy near the
 // substrate costs in the tick.
-void BM_TouchedDeviceTick(benchmark::State& state) {
+struct TouchedDevice {
+  int elements = 10, modes = 0, casimir = 1, contact = 2, gap_ratio_pct = 125;
+  int substeps = HapticPhysicsOptions{}.substeps;
+};
+
+void TouchDevice(benchmark::State& state, const TouchedDevice& c) {
   FoldedFlexureDesign design;
-  design.elements = static_cast<int>(state.range(0));
+  design.elements = c.elements;
   const FrameModel model(FoldedFlexure(design));
   FrameGapOptions under{kGap};
-  under.gap_ratio = state.range(4) / 100.0;
+  under.gap_ratio = c.gap_ratio_pct / 100.0;
   FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, under);
   ContactOptions substrate;
   substrate.gap = kGap;
   substrate.separation = 1e-2 * kGap;  // the scenes' default beside a surface pressure
-  substrate.stiction = state.range(3) == 2;
+  substrate.stiction = c.contact == 2;
   substrate.adhesion_energy = 1e-6;
   std::optional<FrameSubstrateContact> contact;
   ForceSum forces;
-  if (state.range(2) != 0) forces.Add(casimir);
-  if (state.range(3) != 0) forces.Add(contact.emplace(model, substrate));
+  if (c.casimir != 0) forces.Add(casimir);
+  if (c.contact != 0) forces.Add(contact.emplace(model, substrate));
   HapticPhysicsOptions physics;
-  physics.modes = static_cast<int>(state.range(1));
+  physics.modes = c.modes;
+  physics.substeps = c.substeps;
   physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
   physics.damping = DampingModel::QualityFactor(100);
   const double coupling = contact ? 50.0 : 5.0, deepest = contact ? 4e-6 : 2e-6;
@@ -214,6 +220,16 @@ void BM_TouchedDeviceTick(benchmark::State& state) {
     state.counters["releases"] = static_cast<double>(contact->events().releases);
   }
 }
+
+void BM_TouchedDeviceTick(benchmark::State& state) {
+  TouchedDevice c;
+  c.elements = static_cast<int>(state.range(0));
+  c.modes = static_cast<int>(state.range(1));
+  c.casimir = static_cast<int>(state.range(2));
+  c.contact = static_cast<int>(state.range(3));
+  c.gap_ratio_pct = static_cast<int>(state.range(4));
+  TouchDevice(state, c);
+}
 BENCHMARK(BM_TouchedDeviceTick)
     ->Args({10, 0, 0, 0, 125})
     ->Args({10, 0, 1, 0, 125})
@@ -228,6 +244,23 @@ BENCHMARK(BM_TouchedDeviceTick)
     ->Args({125, 0, 1, 1, 125})
     ->Args({125, 0, 1, 2, 125})
     ->ArgNames({"elements", "modes", "casimir", "contact", "gap_ratio_pct"})
+    ->Iterations(2 * kCycle)
+    ->Unit(benchmark::kMicrosecond);
+
+// The same resonator with Casimir, contact and stiction (the rows above with casimir 1, contact
+// 2), at `substeps` generalised-alpha steps a tick instead of the default 2: what the steps cost
+// and whether every tick still converges (a failed tick ends the row with an error).
+void BM_TouchedDeviceTickSteps(benchmark::State& state) {
+  TouchedDevice c;
+  c.elements = static_cast<int>(state.range(0));
+  c.substeps = static_cast<int>(state.range(1));
+  TouchDevice(state, c);
+}
+BENCHMARK(BM_TouchedDeviceTickSteps)
+    ->Args({10, 1})
+    ->Args({10, 2})
+    ->Args({10, 4})
+    ->ArgNames({"elements", "substeps"})
     ->Iterations(2 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 
