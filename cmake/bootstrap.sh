@@ -95,10 +95,12 @@ case "${1:-}" in
     asan_dir=${COSMEMS_ASAN_DIR:-build/asan}
     # A folder another compiler configured starts afresh: CMake would reset the cache for the new
     # compiler and drop the options below with it.
-    if [ -f "$asan_dir/CMakeCache.txt" ] && ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$' "$asan_dir/CMakeCache.txt"; then
+    if [ -f "$asan_dir/CMakeCache.txt" ] &&
+      ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$' "$asan_dir/CMakeCache.txt"; then
       rm -rf "$asan_dir"
     fi
-    cmake -S . -B "$asan_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    cmake -S . -B "$asan_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
       -DCOSMEMS_SANITIZE=address,undefined,float-cast-overflow \
       -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
     cmake --build "$asan_dir" -j"$jobs" --target cosmems_unit_tests
