@@ -178,6 +178,7 @@ BENCHMARK(BM_TouchedBeamTick)
 struct TouchedDevice {
   int elements = 10, modes = 0, casimir = 1, contact = 2, gap_ratio_pct = 125;
   int substeps = HapticPhysicsOptions{}.substeps;
+  double residual_tolerance = HapticPhysicsOptions{}.residual_tolerance;
 };
 
 void TouchDevice(benchmark::State& state, const TouchedDevice& c) {
@@ -199,6 +200,7 @@ void TouchDevice(benchmark::State& state, const TouchedDevice& c) {
   HapticPhysicsOptions physics;
   physics.modes = c.modes;
   physics.substeps = c.substeps;
+  physics.residual_tolerance = c.residual_tolerance;
   physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
   physics.damping = DampingModel::QualityFactor(100);
   const double coupling = contact ? 50.0 : 5.0, deepest = contact ? 4e-6 : 2e-6;
@@ -247,20 +249,23 @@ BENCHMARK(BM_TouchedDeviceTick)
     ->Iterations(2 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 
-// The same resonator with Casimir, contact and stiction (the rows above with casimir 1, contact
-// 2), at `substeps` generalised-alpha steps a tick instead of the default 2 (that row above):
-// what the steps cost and whether every tick still converges (a failed tick ends the row with an
-// error).
-void BM_TouchedDeviceTickSteps(benchmark::State& state) {
+// What accuracy costs in the tick: the same resonator with Casimir, contact and stiction (the
+// rows above with casimir 1, contact 2) at `substeps` generalised-alpha steps a tick and Newton's
+// residual tolerance 10^-`tolerance_exp` instead of the defaults, 2 and 1e-6 (that row above).
+// Every tick must still converge (a failed tick ends the row with an error).
+void BM_TouchedDeviceTickAccuracy(benchmark::State& state) {
   TouchedDevice c;
   c.elements = static_cast<int>(state.range(0));
   c.substeps = static_cast<int>(state.range(1));
+  c.residual_tolerance = std::pow(10.0, -static_cast<double>(state.range(2)));
   TouchDevice(state, c);
 }
-BENCHMARK(BM_TouchedDeviceTickSteps)
-    ->Args({10, 1})
-    ->Args({10, 4})
-    ->ArgNames({"elements", "substeps"})
+BENCHMARK(BM_TouchedDeviceTickAccuracy)
+    ->Args({10, 1, 6})
+    ->Args({10, 4, 6})
+    ->Args({10, 2, 8})
+    ->Args({10, 2, 10})
+    ->ArgNames({"elements", "substeps", "tolerance_exp"})
     ->Iterations(2 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 

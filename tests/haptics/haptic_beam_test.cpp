@@ -16,7 +16,8 @@ using test::kReferenceThickness;
 TEST(HapticBeamTest, APressOnTheTipIsTwoSpringsInSeries) {
   const BeamModel<2> model = test::HapticCantilever();
   const double k_c = 5.0, k_tip = test::ReferenceTipStiffness();
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr,
+                     test::TightPhysics());
   const double depth = 0.5e-6;
   for (int tick = 0; tick < 5; ++tick)
     ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk);
@@ -61,7 +62,8 @@ TEST(HapticBeamTest, TheModalPathFeelsTheSameSpringsOnceThePressHasRungDown) {
   options.path = TimePath::kModal;
   options.modes = 4;
   options.damping = DampingModel::QualityFactor(100);
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr, options);
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr,
+                     test::TightPhysics(options));
   for (int tick = 0; tick < 20; ++tick)
     ASSERT_EQ(beam.Advance(test::OverTip(depth), 0.0), Status::kOk);
   const double series = k_c * k_tip / (k_c + k_tip);
@@ -84,7 +86,8 @@ TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
   const double k_c = 5.0, depth = 0.5e-6;
   {
     const BeamModel<2> model = test::HapticCantilever();
-    HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
+    HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr,
+                       test::TightPhysics());
     const Eigen::Vector3d under(test::kReferenceLength,
                                 -0.5 * kReferenceThickness + depth - kProbeRadius, 0.0);
     for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(under, 0.0), Status::kOk);
@@ -98,7 +101,8 @@ TEST(HapticBeamTest, UnderTheTipOrAtItsSideTheBeamIsTheSpringOfThatBending) {
   }
   const BeamModel<3> model(MakeStructure(StructureKind::kCantilever, test::kReferenceLength,
                                          test::Silicon(), test::ReferenceSection(), 20, 0));
-  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
+  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr,
+                     test::TightPhysics());
   const double width = 20e-6;
   const Eigen::Vector3d beside(test::kReferenceLength, 0.0, 0.5 * width + kProbeRadius - depth);
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(beside, 0.0), Status::kOk);
@@ -136,7 +140,8 @@ TEST(HapticBeamTest, APressOffTheAxisTwistsTheBeam) {
                                          test::Silicon(), test::ReferenceSection(), 20, 0),
                            DofNumbering::kByNode);
   const double k_c = 5.0, depth = 0.5e-6, z0 = 8e-6;
-  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr);
+  HapticBeam<3> beam(model, ProbeOptions{kProbeRadius, k_c}, nullptr, nullptr,
+                     test::TightPhysics());
   const Eigen::Vector3d centre = test::OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z0);
   for (int tick = 0; tick < 5; ++tick) ASSERT_EQ(beam.Advance(centre, 0.0), Status::kOk);
   const Material silicon = test::Silicon();

@@ -31,11 +31,19 @@ struct HapticPhysicsOptions {
   /// propagation keeps every mode it does not damp ringing under the hand. The full path leaves
   /// it out (rho_inf removes what the ticks do not resolve).
   DampingModel damping;
+  /// Newton's residual tolerance in each step (NewtonOptions::residual_tolerance). The hand feels
+  /// the force, not the residual: at 1e-6 of the terms the residual balances, the probe's force
+  /// on the resonator pressed onto the substrate with contact, stiction and the Casimir force
+  /// stayed within 3e-7 of its largest value of the 1e-10 solve's, tick by tick, with the same
+  /// events (tests/haptics/haptic_structure_test.cpp), far below what a device renders, and a
+  /// pressed step takes one Newton correction where 1e-10 takes two (doc/speed.md).
+  double residual_tolerance = 1e-6;
 
   void Validate() const {
     RequirePositive("tick_s", tick_s);
     RequireWithin("substeps", substeps, 1, 10000);
     RequireWithin("rho_inf", rho_inf, 0.0, 1.0);
+    RequireWithin("residual_tolerance", residual_tolerance, 1e-14, 1e-3);
     if (path == TimePath::kModal) RequireWithin("modes", modes, 1, 10000);
   }
 };

@@ -41,6 +41,7 @@ class ProbedPhysics : public HapticPhysics {
     stepper.time_step = options_.tick_s / options_.substeps;
     stepper.parameters = GeneralizedAlphaParameters::FromSpectralRadius(options_.rho_inf);
     stepper.modes = options_.modes;
+    stepper.newton.residual_tolerance = options_.residual_tolerance;
     if (options_.path == TimePath::kModal) stepper.damping = options_.damping;
     BeamStepperSetup setup = MakeBeamStepper(model, stepper, Eigen::MatrixXd::Zero(n, 1), &forces_);
     if (setup.status != Status::kOk) {
