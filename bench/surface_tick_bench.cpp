@@ -2,7 +2,8 @@
 // below, with contact, stiction (Gamma = 0.02 J/m^2) and the Casimir force, composed at compile
 // time (ForceTuple), advanced by 1 ms of simulated time per tick. The beam's first mode is at
 // 68.8 kHz, so a tick is 69 of its periods: generalised-alpha with rho_inf = 0 takes it in
-// `substeps` implicit steps that annihilate the unresolved vibrations. As the tip nears the
+// `substeps` implicit steps that annihilate the unresolved vibrations, each Newton to the haptic
+// tolerance (HapticPhysicsOptions::residual_tolerance). As the tip nears the
 // substrate the Casimir pressure snaps it on within a step, and with little mass in the step's
 // matrix the tangent turns indefinite: Newton then solves with the mass term raised until the
 // matrix is definite (NonlinearNewmarkIntegrator), and cuts the step only if that fails, so one
@@ -106,8 +107,11 @@ void BM_SurfaceTick(benchmark::State& state) {
   const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
   Surface forces = MakeSurface(model);
   const double dt = 1e-3 / substeps / model.units().time;
+  NewtonOptions newton;  // the haptic step's
+  newton.residual_tolerance = HapticPhysicsOptions{}.residual_tolerance;
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
-                                        GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt);
+                                        GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt,
+                                        newton);
   const int n = model.FreeDofCount();
   const int tip = model.dofs().Reduced(20, NodalDof::kUy);
   Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
