@@ -12,6 +12,9 @@
 #include "cosmems/beam/nonlinear_force.hpp"
 #include "cosmems/core/status.hpp"
 #include "cosmems/core/validation.hpp"
+#include "cosmems/linalg/band_cholesky.hpp"
+#include "cosmems/linalg/band_ldlt.hpp"
+#include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/mode_step.hpp"
 #include "cosmems/time/newton_driver.hpp"
@@ -48,12 +51,18 @@ namespace cosmems {
 /// where J turns indefinite (a Casimir or electrostatic snap), an iterate outside the force's
 /// domain pulled back, and a failed step cut into halves up to NewtonOptions::max_cuts deep.
 ///
-/// G and J are dense (n x n, n the free unknowns): the set-up forms G^-1 for the step and each
-/// cut of it (max_cuts + 1 inversions, n^3 each), and an iteration that factors J pays n^3 / 6
-/// (the factor is kept while it serves, as on the Newmark path). That suits the beams of up to a
-/// few hundred unknowns a modal model serves; the Newmark family's band path is the one that
-/// scales to long meshes. Velocity-dependent forces are refused (the modes carry
-/// their damping as ratios). Steps allocate nothing.
+/// G and J are never formed, so the path scales with the mesh as the band path does. By R's
+/// definition G = K^-1 + Phi E Phi^T, E = diag((b0 + b1)_q - 1/w^2), and by Woodbury
+///   G^-1 = K - U D U^T,  U = K Phi,  D = (E^-1 + Phi^T K Phi)^-1 (k x k, one per step length),
+/// so J = B + V C V^T with the band B = K + the force's band tangent (+ a mass term, below),
+/// V = [U, u] (u the force's rank-one vector) and C = diag(-D, s). A factorisation factors B,
+/// solves it for V's k + 1 columns Z = B^-1 V and factors the capacitance S = C^-1 + V^T Z
+/// ((k + 1)^2); a solve is B's back-solve and products with Z. J's definiteness comes from the
+/// inertias (Haynsworth): its negative eigenvalues number neg(B) + pos(S) - pos(C), B factored
+/// with its inertia where it is not definite (a Casimir pressure stiffer than K along a soft
+/// mode, which the modes' own stiffness holds). The same count on G^-1 = K + U (-D) U^T, whose
+/// S is -E^-1, checks the set-up. Velocity-dependent forces are refused (the modes carry their
+/// damping as ratios). Steps allocate nothing.
 class NonlinearModalIntegrator {
  public:
   /// `modal`: the modes of `model` (a BeamModel or a FrameModel); `patterns`: n x m load
@@ -66,6 +75,9 @@ class NonlinearModalIntegrator {
         shapes_(modal.shapes),
         modal_loads_(modal.shapes.transpose() * patterns),
         residual_loads_(modal.ResidualFlexibility(model, patterns)),
+        stiffness_(model.Stiffness()),
+        mass_(model.Mass(0)),
+        stiffness_factor_(model.Stiffness()),
         dt_(time_step),
         newton_((ValidateNewtonOptions(options), options)),
         tangent_(model.FreeDofCount(), model.Mass(0).bandwidth()) {
@@ -78,39 +90,70 @@ class NonlinearModalIntegrator {
     const int n = model.FreeDofCount();
     const Eigen::Index k = shapes_.cols();
     for (const ModalCoordinate& mode : modal.coordinates) RequirePositive("mode omega", mode.omega);
-    mass_ = model.Mass(0).ToDense();
+    if (stiffness_factor_.info() != Status::kOk) setup_status_ = stiffness_factor_.info();
     fit_ = modal.Fit(model);
-    flexibility_ = modal.ResidualFlexibility(model, Eigen::MatrixXd::Identity(n, n));
-    // The step's map and stiffness for the step and each of its cuts.
+    inverse_w2_.resize(k);
+    coupling_.resize(n, k);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      const double w = modal.coordinates[static_cast<std::size_t>(i)].omega;
+      inverse_w2_[i] = 1.0 / (w * w);
+      stiffness_.Multiply(shapes_.col(i), coupling_.col(i));
+    }
+    abs_coupling_ = coupling_.cwiseAbs();
+    const Eigen::MatrixXd modal_stiffness = shapes_.transpose() * coupling_;  // Phi^T K Phi
+    // The step's map and G^-1's low-rank part for the step and each of its cuts.
     for (int depth = 0; depth <= options.max_cuts; ++depth) {
       const double h = std::ldexp(dt_, -depth);
       Level level;
       level.held.resize(k);
+      Eigen::VectorXd e(k);
       for (Eigen::Index i = 0; i < k; ++i) {
         const ModalCoordinate& mode = modal.coordinates[static_cast<std::size_t>(i)];
         level.steps.push_back(ModeStep::Make(mode, h));
         const ModeStep& m = level.steps.back();
         level.held[i] = std::max(m.b0[0] + m.b1[0], kHeldFloor / (mode.omega * mode.omega));
+        // A mode the held force moves exactly as far as statically adds nothing to K^-1: within
+        // a hair of it, kHeldFloor of its static response stands in (E^-1 stays finite).
+        e[i] = level.held[i] - inverse_w2_[i];
+        if (std::abs(e[i]) < kHeldFloor * inverse_w2_[i]) {
+          e[i] = std::copysign(kHeldFloor * inverse_w2_[i], e[i]);
+        }
       }
-      Eigen::MatrixXd g = flexibility_ + shapes_ * level.held.asDiagonal() * shapes_.transpose();
-      const Eigen::LLT<Eigen::MatrixXd> llt(g);
-      if (llt.info() != Eigen::Success) {
+      level.d_inverse = modal_stiffness;
+      level.d_inverse.diagonal() += e.cwiseInverse();
+      const Eigen::LDLT<Eigen::MatrixXd> ldlt(level.d_inverse);
+      level.negative_d = static_cast<int>((ldlt.vectorD().array() < 0.0).count());
+      level.d = ldlt.solve(Eigen::MatrixXd::Identity(k, k));
+      level.d = 0.5 * (level.d + level.d.transpose()).eval();
+      level.abs_d = level.d.cwiseAbs();
+      // G^-1's negative eigenvalues: neg(K) + neg(E) - neg(E^-1 + Phi^T K Phi).
+      const int negative_e = static_cast<int>((e.array() < 0.0).count());
+      if (ldlt.info() != Eigen::Success || negative_e != level.negative_d) {
         setup_status_ = Status::kNotPositiveDefinite;
-        level.stiffness = Eigen::MatrixXd::Zero(n, n);
-      } else {
-        level.stiffness = llt.solve(Eigen::MatrixXd::Identity(n, n));
       }
       levels_.push_back(std::move(level));
     }
-    jacobian_.setZero(n, n);
-    for (Eigen::VectorXd* v : {&d_, &velocity_, &scratch_, &d_new_, &d_free_, &y_free_, &r_,
-                               &residual_, &work_, &correction_, &d_save_, &correction_save_}) {
+    const int bandwidth =
+        std::max({stiffness_.bandwidth(), mass_.bandwidth(), tangent_.band().bandwidth()});
+    band_ = SymmetricBandMatrix(n, bandwidth);
+    (void)band_factor_.Compute(band_);  // sizes the factors' buffers now
+    (void)band_inertia_.Compute(band_);
+    columns_.setZero(n, k + 1);
+    columns_.leftCols(k) = coupling_;
+    solved_columns_.setZero(n, k + 1);
+    capacitance_.setZero(k + 1, k + 1);
+    capacitance_factor_.compute(Eigen::MatrixXd::Identity(k + 1, k + 1));
+    for (Eigen::VectorXd* v :
+         {&d_, &velocity_, &scratch_, &d_new_, &d_free_, &y_free_, &r_, &residual_, &work_,
+          &correction_, &d_save_, &correction_save_, &magnitude_}) {
       v->setZero(n);
     }
-    for (Eigen::VectorXd* v :
-         {&q_, &qdot_, &q_free_, &qdot_free_, &g_from_, &g_to_, &rho_, &q_save_, &qdot_save_}) {
+    for (Eigen::VectorXd* v : {&q_, &qdot_, &q_free_, &qdot_free_, &g_from_, &g_to_, &rho_,
+                               &q_save_, &qdot_save_, &modal_a_, &modal_b_}) {
       v->setZero(k);
     }
+    capacitance_rhs_.setZero(k + 1);
+    capacitance_solution_.setZero(k + 1);
     s_.setZero(patterns.cols());
     s_from_.setZero(patterns.cols());
     s_to_.setZero(patterns.cols());
@@ -130,7 +173,8 @@ class NonlinearModalIntegrator {
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_, r_, tangent_)) return Status::kNonFinite;
-    work_ = d0 - residual_loads_ * s0 + flexibility_ * r_;
+    ResidualFlexibility(r_, scratch_);
+    work_ = d0 - residual_loads_ * s0 + scratch_;
     q_.noalias() = fit_ * work_;
     qdot_.noalias() = fit_ * v0;
     velocity_.noalias() = shapes_ * qdot_;
@@ -181,11 +225,13 @@ class NonlinearModalIntegrator {
  private:
   friend class NewtonDriver;
 
-  // The modes' maps over a step of dt / 2^depth and that step's stiffness G^-1.
+  // The modes' maps over a step of dt / 2^depth and the low-rank part of that step's stiffness
+  // G^-1 = K - U D U^T.
   struct Level {
     std::vector<ModeStep> steps;
     Eigen::VectorXd held;  ///< how far a unit force held over the step moves each mode
-    Eigen::MatrixXd stiffness;
+    Eigen::MatrixXd d, d_inverse, abs_d;
+    int negative_d = 0;  ///< D's negative eigenvalues
   };
 
   // A force held over a whole number of an undamped mode's periods leaves that mode where it
@@ -197,7 +243,6 @@ class NonlinearModalIntegrator {
   // One step over [from, to] of the step (dt / 2^depth long), the loads interpolated linearly.
   Status Substep(double from, double to, int depth) {
     const Level& level = levels_[static_cast<std::size_t>(depth)];
-    const Eigen::MatrixXd& stiffness = level.stiffness;
     s_from_ = (1.0 - from) * s_ + from * *s_target_;
     s_to_ = (1.0 - to) * s_ + to * *s_target_;
     g_from_.noalias() = modal_loads_ * s_from_;
@@ -211,7 +256,7 @@ class NonlinearModalIntegrator {
     }
     d_free_.noalias() = shapes_ * q_free_;
     d_free_.noalias() += residual_loads_ * s_to_;
-    y_free_.noalias() = stiffness * d_free_;
+    StepStiffness(level, d_free_, y_free_);
     d_new_ = d_free_ + correction_;  // the force holds the beam where it held it last
     const double h = (to - from) * dt_;
     mass_term_ = 2.0 / (h * h);  // a mode's stiffness over the step per unit modal mass
@@ -227,7 +272,7 @@ class NonlinearModalIntegrator {
     r_.setZero();
     tangent_.Clear();
     if (!force_.Evaluate(d_new_, r_, tangent_)) return false;
-    work_.noalias() = level_->stiffness * d_new_;
+    StepStiffness(*level_, d_new_, work_);
     residual_ = work_ - y_free_ + r_;
     out.norm = residual_.norm();
     out.reference = work_.norm() + y_free_.norm() + r_.norm();
@@ -241,16 +286,22 @@ class NonlinearModalIntegrator {
     return true;
   }
 
+  // J^-1 R = B^-1 R - Z S^-1 Z^T R, in place in residual_.
   Status SolveKept() {
-    const auto lower = jacobian_.triangularView<Eigen::Lower>();
-    lower.solveInPlace(residual_);
-    lower.adjoint().solveInPlace(residual_);
+    capacitance_rhs_.noalias() = solved_columns_.transpose() * residual_;
+    if (band_definite_) {
+      band_factor_.SolveInPlace(residual_);
+    } else {
+      band_inertia_.SolveInPlace(residual_);
+    }
+    capacitance_solution_ = capacitance_factor_.solve(capacitance_rhs_);
+    residual_.noalias() -= solved_columns_ * capacitance_solution_;
     return Status::kOk;
   }
 
   NewtonFactor Factor(double shift) {
     NewtonFactor out;
-    out.status = Solve(level_->stiffness, shift);
+    out.status = Solve(*level_, shift);
     out.reusable = true;
     return out;
   }
@@ -272,46 +323,83 @@ class NonlinearModalIntegrator {
 
   bool Settle() { return force_.Settle(d_new_); }
 
-  double RoundOff() { return RoundOff(level_->stiffness); }
+  double RoundOff() { return RoundOff(*level_); }
 
   Status Finish() { return Accept(*level_, from_, to_); }
 
-  // Solves (G^-1 + dr/dd + shift M_0) delta = R in place in residual_. With a shift the mass
-  // term is that of a shorter step, as in the Newmark path: the iteration creeps the way a
-  // shorter step would, solving this step's equations where J itself is indefinite.
-  Status Solve(const Eigen::MatrixXd& stiffness, double shift) {
-    const SymmetricBandMatrix& band = tangent_.band();
-    const Eigen::MatrixXd& data = band.data();
-    const int n = band.size();
+  // out = G^-1 x = K x - U D U^T x.
+  void StepStiffness(const Level& level, const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+    stiffness_.Multiply(x, out);
+    modal_a_.noalias() = coupling_.transpose() * x;
+    modal_b_.noalias() = level.d * modal_a_;
+    out.noalias() -= coupling_ * modal_b_;
+  }
+
+  // out = R x = K^-1 x - Phi diag(1/w^2) Phi^T x.
+  void ResidualFlexibility(const Eigen::VectorXd& x, Eigen::VectorXd& out) {
+    out = x;
+    stiffness_factor_.SolveInPlace(out);
+    modal_a_.noalias() = shapes_.transpose() * x;
+    modal_a_ = modal_a_.cwiseProduct(inverse_w2_);
+    out.noalias() -= shapes_ * modal_a_;
+  }
+
+  // Factors J + shift M_0 = B + V C V^T (see the class comment) and solves J delta = R in place
+  // in residual_. With a shift the mass term is that of a shorter step, as in the Newmark path:
+  // the iteration creeps the way a shorter step would, solving this step's equations where J
+  // itself is indefinite.
+  Status Solve(const Level& level, double shift) {
+    const Eigen::Index k = shapes_.cols();
+    const SymmetricBandMatrix& tangent = tangent_.band();
+    Eigen::MatrixXd& b = band_.mutable_data();
+    b.setZero();
+    b.topRows(stiffness_.bandwidth() + 1) = stiffness_.data();
+    b.topRows(tangent.bandwidth() + 1) += tangent.data();
+    if (shift != 0.0) b.topRows(mass_.bandwidth() + 1) += shift * mass_.data();
+    // The rank-one part as V's last column; without one, a zero column with C's entry 1.
     const double scale = tangent_.rank_one_scale();
-    const Eigen::VectorXd& u = tangent_.rank_one_vector();
-    for (int j = 0; j < n; ++j) {  // the lower triangle, which the factorisation reads
-      for (int i = j; i < n; ++i) {
-        double value = stiffness(i, j) + shift * mass_(i, j);
-        if (i - j <= band.bandwidth()) value += data(i - j, j);
-        if (scale != 0.0) value += scale * u[i] * u[j];
-        jacobian_(i, j) = value;
-      }
+    const double c_last = scale != 0.0 ? scale : 1.0;
+    if (scale != 0.0) {
+      columns_.col(k) = tangent_.rank_one_vector();
+    } else {
+      columns_.col(k).setZero();
     }
-    // In place and unblocked: the blocked factorisation Eigen's LLT takes above 32 rows updates
-    // its trailing blocks by matrix products whose workspace, past about 400 rows, comes from
-    // the heap. The column by column one needs matrix-vector products only.
-    if (Eigen::internal::llt_inplace<double, Eigen::Lower>::unblocked(jacobian_) >= 0) {
-      return Status::kNotPositiveDefinite;
+    solved_columns_ = columns_;
+    int negative = 0;  // J's negative eigenvalues, by the inertias
+    band_definite_ = band_factor_.Compute(band_).info() == Status::kOk;
+    if (band_definite_) {
+      for (Eigen::Index c = 0; c <= k; ++c) band_factor_.SolveInPlace(solved_columns_.col(c));
+    } else {
+      if (band_inertia_.Compute(band_) != Status::kOk) return Status::kNotPositiveDefinite;
+      negative = band_inertia_.negative_pivots();
+      for (Eigen::Index c = 0; c <= k; ++c) band_inertia_.SolveInPlace(solved_columns_.col(c));
     }
+    // S = C^-1 + V^T Z, C^-1 = diag(-D^-1, 1 / c_last).
+    capacitance_.noalias() = columns_.transpose() * solved_columns_;
+    capacitance_.topLeftCorner(k, k) -= level.d_inverse;
+    capacitance_(k, k) += 1.0 / c_last;
+    capacitance_factor_.compute(capacitance_);
+    if (capacitance_factor_.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+    const auto pivots = capacitance_factor_.vectorD().array();
+    if ((pivots == 0.0).any() || !pivots.isFinite().all()) return Status::kNotPositiveDefinite;
+    negative += static_cast<int>((pivots > 0.0).count());
+    negative -= level.negative_d + (c_last > 0.0 ? 1 : 0);  // C's positive eigenvalues
+    if (negative != 0) return Status::kNotPositiveDefinite;
     return SolveKept();
   }
 
-  // The rounding error of G^-1 d, whose entries each sum n products (Higham 3.5); scratch_ holds
-  // |G^-1| |d|, summed column by column as G^-1 is stored.
-  double RoundOff(const Eigen::MatrixXd& stiffness) {
-    const Eigen::Index n = d_new_.size();
-    scratch_.setZero();
-    for (Eigen::Index j = 0; j < n; ++j) {
-      scratch_ += std::abs(d_new_[j]) * stiffness.col(j).cwiseAbs();
-    }
-    const double mu = static_cast<double>(n) * 0.5 * std::numeric_limits<double>::epsilon();
-    return mu / (1.0 - mu) * scratch_.norm();
+  // The rounding error of G^-1 d: K d's (SymmetricBandMatrix::ProductRoundOff) and that of the
+  // low-rank part, whose entries each sum 2 k + 1 products (Higham 3.5), bounded by
+  // |U| |D| |U|^T |d|.
+  double RoundOff(const Level& level) {
+    const double band = stiffness_.ProductRoundOff(d_new_, scratch_);
+    magnitude_ = d_new_.cwiseAbs();
+    modal_a_.noalias() = abs_coupling_.transpose() * magnitude_;
+    modal_b_.noalias() = level.abs_d * modal_a_;
+    magnitude_.noalias() = abs_coupling_ * modal_b_;
+    const double mu =
+        static_cast<double>(2 * shapes_.cols() + 1) * 0.5 * std::numeric_limits<double>::epsilon();
+    return band + mu / (1.0 - mu) * magnitude_.norm();
   }
 
   // Takes d_new_ and the force r_ there as the end of the sub-step [from, to].
@@ -338,18 +426,29 @@ class NonlinearModalIntegrator {
   }
 
   NonlinearForce& force_;
-  Eigen::MatrixXd shapes_;          ///< Phi, n x k
-  Eigen::MatrixXd modal_loads_;     ///< Phi^T P, k x m
-  Eigen::MatrixXd residual_loads_;  ///< R P, n x m
-  Eigen::MatrixXd flexibility_;     ///< R, n x n
-  Eigen::MatrixXd mass_;            ///< M_0, n x n
-  Eigen::MatrixXd fit_;             ///< (Phi^T M_0 Phi)^-1 Phi^T M_0, k x n
+  Eigen::MatrixXd shapes_;                   ///< Phi, n x k
+  Eigen::MatrixXd modal_loads_;              ///< Phi^T P, k x m
+  Eigen::MatrixXd residual_loads_;           ///< R P, n x m
+  SymmetricBandMatrix stiffness_;            ///< K
+  SymmetricBandMatrix mass_;                 ///< M_0
+  BandCholesky stiffness_factor_;            ///< K's, for R
+  Eigen::VectorXd inverse_w2_;               ///< 1 / w^2 of each mode
+  Eigen::MatrixXd coupling_, abs_coupling_;  ///< U = K Phi and |U|, n x k
+  Eigen::MatrixXd fit_;                      ///< (Phi^T M_0 Phi)^-1 Phi^T M_0, k x n
   double dt_;
   NewtonDriver newton_;
   std::vector<Level> levels_;
   Status setup_status_ = Status::kOk;
   ForceTangent tangent_;
-  Eigen::MatrixXd jacobian_;
+  // J's factor: B's (band_factor_ where B is definite, band_inertia_ otherwise), V, Z = B^-1 V
+  // and the capacitance S's.
+  SymmetricBandMatrix band_;
+  BandCholesky band_factor_;
+  BandLdlt band_inertia_;
+  bool band_definite_ = true;
+  Eigen::MatrixXd columns_, solved_columns_, capacitance_;
+  Eigen::LDLT<Eigen::MatrixXd> capacitance_factor_;
+  Eigen::VectorXd capacitance_rhs_, capacitance_solution_, modal_a_, modal_b_, magnitude_;
   double time_ = 0.0, time_save_ = 0.0;
   // The sub-step being solved: its level, its fraction of the step and J's mass term.
   const Level* level_ = nullptr;
