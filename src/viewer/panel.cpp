@@ -168,8 +168,8 @@ bool Panel::DrawModel() {
     done = true;
   }
   done |= EditInt("series order", draft_.series_order, 0, 3);
-  ImGui::TextDisabled("integrator: generalised-alpha, %d steps a tick", draft_.physics.substeps);
-  done |= EditInt("steps a tick", draft_.physics.substeps, 1, 100);
+  ImGui::TextDisabled("integrator: generalised-alpha, %d steps a tick", draft_.physics.Substeps());
+  done |= EditInt("steps a tick (0: the default)", draft_.physics.substeps, 0, 100);
   float rho = static_cast<float>(draft_.physics.rho_inf);
   if (ImGui::SliderFloat("rho_inf", &rho, 0.0f, 1.0f, "%.2f")) {
     draft_.physics.rho_inf = static_cast<double>(rho);

@@ -52,6 +52,9 @@ class ForceSum final : public NonlinearForce {
   void Revert() override {
     for (NonlinearForce* f : forces_) f->Revert();
   }
+  void StartStep() override {
+    for (NonlinearForce* f : forces_) f->StartStep();
+  }
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     for (NonlinearForce* f : forces_) f->ProjectMotion(d, v, a);
   }

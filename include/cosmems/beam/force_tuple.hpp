@@ -46,6 +46,9 @@ class ForceTuple final : public NonlinearForce {
   void Revert() override {
     std::apply([](auto&... f) { (f.Revert(), ...); }, forces_);
   }
+  void StartStep() override {
+    std::apply([](auto&... f) { (f.StartStep(), ...); }, forces_);
+  }
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     std::apply([&](auto&... f) { (f.ProjectMotion(d, v, a), ...); }, forces_);
   }

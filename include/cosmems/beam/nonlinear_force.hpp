@@ -107,6 +107,14 @@ class NonlinearForce {
   virtual void Commit(const Eigen::VectorXd& /*d*/) {}
   /// The solver abandoned the states Settle() reached since the last Commit().
   virtual void Revert() {}
+  /// A time step starts from the committed state (after Commit(), or after Revert() when a step
+  /// is retried in halves). A force whose state can move toward that state's balance before
+  /// Newton runs moves it here (a contact's multipliers take the committed reactions: one
+  /// multiplier update between steps, so a contact pressed steadily rarely needs one inside a
+  /// step). Revert() goes back to the state before it. NonlinearNewmarkIntegrator calls it;
+  /// statics do not, nor does the modal path, whose forces are held over a step (with it, a step
+  /// of the resonator's shuttle pressed onto the substrate failed). Allocates nothing.
+  virtual void StartStep() {}
   /// A time step ended at d with velocity v and acceleration a: a constraint removes the motion
   /// it forbids (a node driven onto the substrate stops there: an inelastic impact). Allocates
   /// nothing.

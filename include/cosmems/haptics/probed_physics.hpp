@@ -38,7 +38,7 @@ class ProbedPhysics : public HapticPhysics {
     // The probe and the effects are the forces; the one load pattern stays zero.
     StepperOptions stepper;
     stepper.path = options_.path;
-    stepper.time_step = options_.tick_s / options_.substeps;
+    stepper.time_step = options_.tick_s / options_.Substeps();
     stepper.parameters = GeneralizedAlphaParameters::FromSpectralRadius(options_.rho_inf);
     stepper.modes = options_.modes;
     stepper.newton.residual_tolerance = options_.residual_tolerance;
@@ -55,7 +55,7 @@ class ProbedPhysics : public HapticPhysics {
   Status Advance(const Eigen::Vector3d& probe_m, double source_time_s) override {
     probe_.MoveTo(probe_m);
     Status status = Status::kOk;
-    for (int i = 0; i < options_.substeps && status == Status::kOk; ++i) {
+    for (int i = 0; i < options_.Substeps() && status == Status::kOk; ++i) {
       status = stepper_->Step(amplitude_);
     }
     status_ = status;

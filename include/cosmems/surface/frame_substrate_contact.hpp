@@ -16,6 +16,7 @@
 #include "cosmems/surface/frame_adhesion_sites.hpp"
 #include "cosmems/surface/frame_contact_points.hpp"
 #include "cosmems/surface/impact_projection.hpp"
+#include "cosmems/surface/step_start_multipliers.hpp"
 #include "cosmems/surface/substrate_contact_model.hpp"
 
 namespace cosmems {
@@ -31,7 +32,9 @@ namespace cosmems {
 /// Lagrangian): during Newton the multipliers are fixed and the points pressed into the substrate
 /// are stiff springs k n n^T; once Newton converges (Settle) a point through the plane by more than
 /// the tolerance, or still pushing while clear of it by more than the tolerance, takes lambda = p,
-/// and Newton runs again, so a converged state meets the tolerance at every point. Each point's k
+/// and Newton runs again, so a converged state meets the tolerance at every point. A time step
+/// starts with the multipliers at the reactions of the state it starts from, while that does not
+/// overshoot (StepStartMultipliers). Each point's k
 /// is `penalty` times the structure's stiffness there, 1 / (n^T K^-1 n): a device's stiffness
 /// differs between its points by orders of magnitude (a plate on soft springs beside short stiff
 /// connectors), and a penalty scaled to the stiffest would make the pressed plate's Newton matrix
@@ -79,7 +82,8 @@ class FrameSubstrateContact final : public FrameElementForce {
         sites_(model, points_),
         model_(model),
         length_m_(model.units().length),
-        projection_(model.FreeDofCount(), static_cast<Eigen::Index>(points_.points().size())) {
+        projection_(model.FreeDofCount(), static_cast<Eigen::Index>(points_.points().size())),
+        starts_(points_.points().size()) {
     RequireWithin("separation", options.separation, 0.0, 0.5 * options.gap);
     if (options.stiction) RequirePositive("adhesion_energy", options.adhesion_energy);
     stiction_ = options.stiction;
@@ -195,6 +199,7 @@ class FrameSubstrateContact final : public FrameElementForce {
       const double violation = stuck_[k] ? std::abs(g) : -g;
       if (violation > tolerance_ || (!stuck_[k] && g > tolerance_ && Reaction(k, g) > 0.0)) {
         lambda_[k] = Reaction(k, g);
+        starts_.UpdatedInside(k, committed_lambda_[k]);
         quiet_ = false;
         settled = false;
       }
@@ -208,6 +213,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     // Holding nothing and provably clear of the proximity distance: nothing to count.
     if (quiet_ && state_ == ContactState::kFree &&
         ClearBy(std::max(tolerance_, proximity_ - separation_), d)) {
+      starts_.Forget();
       return;
     }
     ContactState state = ContactState::kFree;
@@ -215,6 +221,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     for (std::size_t k = 0; k < rest_.size(); ++k) {
       const double g = Gap(k, d);
       quiet = quiet && lambda_[k] == 0.0 && !stuck_[k];
+      starts_.Record(k, Holds(k) ? Reaction(k, g) : lambda_[k]);
       touching_[k] = stuck_[k] || (Holds(k) && Touching(k, g));
       if (stuck_[k]) {
         state = ContactState::kStuck;
@@ -233,12 +240,17 @@ class FrameSubstrateContact final : public FrameElementForce {
     committed_lambda_ = lambda_;  // equal sizes: copies without allocating
     committed_stuck_ = stuck_;
     quiet_ = committed_quiet_ = quiet;
+    starts_.Recorded(state == ContactState::kFree);
   }
 
   void Revert() override {
     lambda_ = committed_lambda_;
     stuck_ = committed_stuck_;
     quiet_ = committed_quiet_;
+  }
+
+  void StartStep() override {
+    if (starts_.Apply(lambda_)) quiet_ = false;
   }
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
@@ -273,6 +285,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     committed_stuck_ = stuck_;
     state_ = ContactState::kFree;
     quiet_ = committed_quiet_ = true;
+    starts_.Forget();
   }
 
   /// Every point that can stick stuck, as after the device was pressed down all over (the start
@@ -285,6 +298,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     }
     committed_stuck_ = stuck_;
     quiet_ = committed_quiet_ = false;
+    starts_.Forget();
   }
 
   /// The device pressed down all over, every node and body that can move on the contact plane
@@ -592,6 +606,7 @@ class FrameSubstrateContact final : public FrameElementForce {
   SymmetricBandMatrix springs_;  ///< K with the springs of the points holding (stiction)
   BandCholesky compliance_;
   std::array<Eigen::VectorXd, 4> responses_;  ///< A^-1 n for up to four released points
+  StepStartMultipliers starts_;
 };
 
 }  // namespace cosmems

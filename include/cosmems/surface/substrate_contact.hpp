@@ -14,6 +14,7 @@
 #include "cosmems/linalg/band_cholesky.hpp"
 #include "cosmems/surface/contact_state.hpp"
 #include "cosmems/surface/impact_projection.hpp"
+#include "cosmems/surface/step_start_multipliers.hpp"
 #include "cosmems/surface/substrate_contact_model.hpp"
 
 namespace cosmems {
@@ -27,11 +28,13 @@ namespace cosmems {
 /// and the points holding are fixed and the force is a stiff spring k N_i^T N_i on the points
 /// pressed into the substrate; once Newton converges (Settle), a point that penetrates by more
 /// than the tolerance, or still pushes while clear of the plane by more than it, takes
-/// lambda_i = p_i (an element's point starts to hold), and Newton runs again. An element's point is
-/// let go once it lifts clear of the plane: one kept on an element lying flat would sit on the kink
-/// of max(0, .) and only slow Newton. With k = 1e4 times the beam's nodal stiffness each update
-/// cuts the penetration about 1e4-fold, so a converged state meets the tolerance at every point
-/// after an update or two, and the penalty's error is not left in the answer: a beam pressed
+/// lambda_i = p_i (an element's point starts to hold), and Newton runs again. A time step starts
+/// with the multipliers at the reactions of the state it starts from, while that does not
+/// overshoot (StepStartMultipliers). An element's
+/// point is let go once it lifts clear of the plane: one kept on an element lying flat would sit on
+/// the kink of max(0, .) and only slow Newton. With k = 1e4 times the beam's nodal stiffness each
+/// update cuts the penetration about 1e4-fold, so a converged state meets the tolerance at every
+/// point after an update or two, and the penalty's error is not left in the answer: a beam pressed
 /// between two nodes of a coarse mesh stops where it is pressed, not where its nodes are. Between
 /// the points the cubic may still dip a little further (at most (h/4)^2/8 of its curvature;
 /// Penetration() measures the deepest place). With a surface pressure p(d) the separation must keep
@@ -166,6 +169,7 @@ class SubstrateContact final : public NonlinearForce {
       const double violation = stuck_[k] ? std::abs(g) : -g;
       if (violation > tolerance_ || clear_but_pushing) {
         lambda_[k] = Reaction(k, g);
+        starts_.UpdatedInside(k, committed_lambda_[k]);
         quiet_ = false;
         settled = false;
       }
@@ -183,7 +187,10 @@ class SubstrateContact final : public NonlinearForce {
   void Commit(const Eigen::VectorXd& d) override {
     // Free and holding nothing, and d provably clear of the plane and of the proximity warning
     // at every point: the states, the events and the committed copies stay as they are.
-    if (quiet_ && state_ == ContactState::kFree && ClearBy(free_margin_, d)) return;
+    if (quiet_ && state_ == ContactState::kFree && ClearBy(free_margin_, d)) {
+      starts_.Forget();
+      return;
+    }
     ContactState beam = ContactState::kFree;
     bool quiet = true;
     for (std::size_t k = node_count_; k < point_count_; ++k) {
@@ -220,6 +227,10 @@ class SubstrateContact final : public NonlinearForce {
     committed_stuck_ = stuck_;
     committed_placed_ = placed_;
     quiet_ = committed_quiet_ = quiet;
+    for (std::size_t k = 0; k < point_count_; ++k) {
+      starts_.Record(k, Holds(k) ? Reaction(k, Gap(points_[k], d)) : lambda_[k]);
+    }
+    starts_.Recorded(beam == ContactState::kFree);
   }
 
   void Revert() override {
@@ -227,6 +238,10 @@ class SubstrateContact final : public NonlinearForce {
     stuck_ = committed_stuck_;
     placed_ = committed_placed_;
     quiet_ = committed_quiet_;
+  }
+
+  void StartStep() override {
+    if (starts_.Apply(lambda_)) quiet_ = false;
   }
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
@@ -260,6 +275,7 @@ class SubstrateContact final : public NonlinearForce {
     committed_placed_ = placed_;
     committed_lambda_ = lambda_;
     committed_stuck_ = stuck_;
+    starts_.Forget();
     state_ = ContactState::kFree;
     quiet_ = committed_quiet_ = true;
   }
@@ -270,6 +286,7 @@ class SubstrateContact final : public NonlinearForce {
     std::fill(stuck_.begin(), stuck_.begin() + static_cast<std::ptrdiff_t>(node_count_), 1);
     committed_stuck_ = stuck_;
     quiet_ = committed_quiet_ = node_count_ == 0;
+    starts_.Forget();
   }
 
   /// The beam pressed down all along (SubstrateContactModel::PressedDisplacement).
@@ -489,6 +506,7 @@ class SubstrateContact final : public NonlinearForce {
   std::vector<int> active_;  ///< the points the projection holds
   ImpactProjection projection_{model_->stiffness().size(),
                                static_cast<Eigen::Index>(model_->points().size())};
+  StepStartMultipliers starts_{model_->points().size()};
 };
 
 }  // namespace cosmems

@@ -148,6 +148,7 @@ class NonlinearNewmarkIntegrator {
   // around both ends), so Newton would end there too, to round-off. False, and this integrator
   // back at the step's start, when the end is not idle.
   bool IdleStep(const Eigen::VectorXd& f_next) {
+    force_.StartStep();  // as Newton's steps do, so that both keep one history
     if (!streak_) {
       linear_.SetState(d_, v_, a_, f_);
       streak_ = true;
@@ -171,6 +172,7 @@ class NonlinearNewmarkIntegrator {
 
   // One generalised-alpha step over [from, to] of the step, the load interpolated linearly.
   Status Substep(double from, double to) {
+    force_.StartStep();
     h_ = (to - from) * dt_;
     const double h = h_;
     const double am = p_.alpha_m, af = p_.alpha_f, beta = p_.beta, gamma = p_.gamma;
