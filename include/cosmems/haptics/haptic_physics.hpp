@@ -34,7 +34,7 @@ struct HapticPhysicsOptions {
   /// Newton's residual tolerance in each step (NewtonOptions::residual_tolerance). The hand feels
   /// the force, not the residual: at 1e-6 of the terms the residual balances, the probe's force
   /// on the resonator pressed onto the substrate with contact, stiction and the Casimir force
-  /// stayed within 3e-7 of its largest value of the 1e-10 solve's, tick by tick, with the same
+  /// stayed within 2.2e-5 of its largest value of the 1e-10 solve's, tick by tick, with the same
   /// events (tests/haptics/haptic_structure_test.cpp), far below what a device renders, and a
   /// pressed step takes one Newton correction where 1e-10 takes two (doc/speed.md).
   double residual_tolerance = 1e-6;
