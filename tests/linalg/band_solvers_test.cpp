@@ -87,6 +87,25 @@ TEST_P(BandSolverTest, SolvesTwoSystemsTogether) {
   EXPECT_LT((y - band.Solve(c)).norm(), 1e-14 * y.norm());
 }
 
+// The selected inverse against the dense inverse, entry by entry within the band: the recurrence
+// sums at most b products a row from entries of the same size (condition number < 10), so 1e-13
+// of the largest entry is a few hundred ulps.
+TEST_P(BandSolverTest, InvertsWithinTheBandLikeTheDenseInverse) {
+  const auto [n, bw] = GetParam();
+  const SymmetricBandMatrix a = RandomSpdBand(n, bw, 11u + n);
+  const Eigen::MatrixXd expected = a.ToDense().inverse();
+  const BandCholesky band(a);
+  ASSERT_EQ(band.info(), Status::kOk);
+  const SymmetricBandMatrix inverse = band.InverseWithinBand();
+  ASSERT_EQ(inverse.bandwidth(), bw);
+  const double largest = expected.cwiseAbs().maxCoeff();
+  for (int j = 0; j < n; ++j) {
+    for (int i = j; i <= std::min(n - 1, j + bw); ++i) {
+      EXPECT_NEAR(inverse(i, j), expected(i, j), 1e-13 * largest) << i << ", " << j;
+    }
+  }
+}
+
 // The band factored once, the rank-one part renewed on it (what a Newton iteration does when
 // the band part of its tangent barely moved), against dense LU of the whole sum.
 TEST(BandRankOneCholeskyTest, RenewsTheRankOnePartOnAKeptBandFactor) {

@@ -1,7 +1,7 @@
 // NewtonDriver's convergence at the residual's rounding floor, on a scheme written here whose
 // floor lies above the tolerance (as a fine mesh's K d does): the solve ends there, the bound is
 // formed once a solve, and the factor serves the next solve; and its matrix deferred to the
-// iterations that factor.
+// iterations that factor; and a prediction outside the domain taken back to its start.
 #include "cosmems/time/newton_driver.hpp"
 
 #include <gtest/gtest.h>
@@ -120,8 +120,41 @@ class DeferringCubicScheme : public CubicScheme {
   using CubicScheme::EvaluateMatrix;
 };
 
+// a x = b defined for x < 1 alone (Evaluate() fails beyond it, as a pressure's 1/gap^n does),
+// Newton starting at a prediction; the state it was predicted from is x = 0. BackToStart() takes
+// the iterate there when `back`, and is refused otherwise.
+class BoundedScheme : public OneUnknownScheme {
+ public:
+  BoundedScheme(double b, double prediction, bool back) : back_(back) {
+    b_ = b;
+    x_ = prediction;
+  }
+  int backs() const { return backs_; }
+
+  bool Evaluate(NewtonResidual& out) {
+    if (!(x_ < 1.0)) return false;
+    residual_ = kA * x_ - b_;
+    out.norm = std::abs(residual_);
+    out.reference = std::abs(kA * x_) + std::abs(b_);
+    return true;
+  }
+  NewtonFactor Factor(double /*shift*/) { return FactorSlope(kA); }
+  bool BackToStart() {
+    if (!back_) return false;
+    ++backs_;
+    x_ = 0.0;
+    return true;
+  }
+
+ private:
+  static constexpr double kA = 3.0;
+  bool back_;
+  int backs_ = 0;
+};
+
 }  // namespace newton_driver_test
 
+using newton_driver_test::BoundedScheme;
 using newton_driver_test::CubicScheme;
 using newton_driver_test::DeferringCubicScheme;
 using newton_driver_test::FloorScheme;
@@ -191,6 +224,28 @@ TEST(NewtonDriverTest, WithoutARoundingBoundTheFloorEndsNothing) {
   } scheme(1.0);
   EXPECT_EQ(driver.Solve(scheme, 1.0), Status::kNotConverged);
   EXPECT_EQ(driver.stats().evaluations, driver.options().max_iterations);
+}
+
+// A prediction outside the domain (x = 4 past x < 1) starts Newton from the state it was
+// predicted from instead of failing: the solve ends at b / a, as Newton from there does (the
+// same iterations); a scheme with no such state fails as before, and a prediction inside is kept.
+TEST(NewtonDriverTest, APredictionOutsideTheDomainStartsWhereItWasPredictedFrom) {
+  const double nan = std::nan("");
+  BoundedScheme outside(1.5, 4.0, true);
+  NewtonDriver driver;
+  ASSERT_EQ(driver.Solve(outside, nan), Status::kOk);
+  EXPECT_NEAR(outside.x(), 0.5, 1e-12);
+  EXPECT_EQ(outside.backs(), 1);
+  BoundedScheme start(1.5, 0.0, true);
+  NewtonDriver from_start;
+  ASSERT_EQ(from_start.Solve(start, nan), Status::kOk);
+  EXPECT_EQ(driver.stats().iterations, from_start.stats().iterations);
+  BoundedScheme refused(1.5, 4.0, false);
+  EXPECT_EQ(NewtonDriver().Solve(refused, nan), Status::kNonFinite);
+  BoundedScheme inside(1.5, 0.9, true);
+  ASSERT_EQ(NewtonDriver().Solve(inside, nan), Status::kOk);
+  EXPECT_NEAR(inside.x(), 0.5, 1e-12);
+  EXPECT_EQ(inside.backs(), 0);
 }
 
 }  // namespace cosmems

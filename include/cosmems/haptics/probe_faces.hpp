@@ -94,12 +94,11 @@ class ProbeFaces : public NonlinearForce {
     return touch;
   }
 
-  /// The weights w_f of the face's point under the probe (reduced dofs, internal units), for
-  /// the structure's compliance there; zero for a face that does not move.
-  void ShapeVector(ProbeFace face, Eigen::VectorXd& n) const {
-    n.setZero();
-    const Face& f = faces_[static_cast<std::size_t>(face)];
-    for (int i = 0; i < f.count; ++i) n[f.dof[i]] = f.n[i];
+  /// w_f^T A w_f of the weights of the face's point under the probe, for A the band of K^-1
+  /// (BandCholesky::InverseWithinBand): the structure's compliance there (internal units),
+  /// zero for a face that does not move. The weights fit the band, as their stiffness does.
+  double Compliance(ProbeFace face, const SymmetricBandMatrix& inverse_band) const {
+    return faces_[static_cast<std::size_t>(face)].QuadraticForm(inverse_band);
   }
   double stiffness_n_per_m() const { return stiffness_ * units_.force / units_.length; }
 

@@ -5,6 +5,8 @@
 #include <array>
 #include <cmath>
 
+#include "cosmems/linalg/symmetric_band_matrix.hpp"
+
 namespace cosmems {
 
 /// One scalar motion of a frame (a point's displacement along a direction) as sparse weights
@@ -38,6 +40,18 @@ struct DofWeights {
     double u = 0.0;
     for (int i = 0; i < count; ++i) u += n[i] * x[dof[i]];
     return u;
+  }
+  /// w^T A w, the dofs within A's band of each other (a matrix the weights' own stiffness
+  /// k w w^T is added to has room for them): the compliance along the motion for A = K^-1's band
+  /// (BandCholesky::InverseWithinBand).
+  double QuadraticForm(const SymmetricBandMatrix& a) const {
+    double sum = 0.0;
+    for (int i = 0; i < count; ++i) {
+      double row = 0.0;
+      for (int j = 0; j < count; ++j) row += a(dof[i], dof[j]) * n[j];
+      sum += n[i] * row;
+    }
+    return sum;
   }
 };
 

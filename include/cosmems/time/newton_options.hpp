@@ -9,8 +9,10 @@ namespace cosmems {
 /// Convergence of the Newton iterations of a nonlinear step. Both tests are relative, so the
 /// same options serve a 100 nm beam and a 5 mm one.
 struct NewtonOptions {
-  /// ||R|| <= residual_tolerance * (||f|| + ||M a|| + ||C v|| + ||K d|| + ||r||): the residual
-  /// against the size of the terms it balances.
+  /// ||R|| <= residual_tolerance * (||f|| + ||M (a + c_M v)|| + ||K (d + c_K v)|| + ||r||): the
+  /// residual against the size of the terms it balances, the Rayleigh damping C = c_M M + c_K K
+  /// counted with the inertia and the elastic force it is proportional to (a static solve's:
+  /// ||f|| + ||K d|| + ||r||).
   double residual_tolerance = 1e-10;
   /// ||delta d|| <= increment_tolerance * ||d||: the last correction changed nothing that matters.
   double increment_tolerance = 1e-12;

@@ -285,6 +285,11 @@ class NonlinearModalIntegrator {
     d_new_ += residual_;
     return true;
   }
+  // The prediction outside the force's domain: the step's start instead.
+  bool BackToStart() {
+    d_new_ = d_;
+    return true;
+  }
 
   // J^-1 R = B^-1 R - Z S^-1 Z^T R, in place in residual_.
   Status SolveKept() {
