@@ -99,26 +99,23 @@ class FrameSubstrateContact final : public FrameElementForce {
     const std::size_t m = points_.points().size();
     const SymmetricBandMatrix& stiffness = model.Stiffness();
     const BandCholesky factor(stiffness);
-    Eigen::VectorXd unit = Eigen::VectorXd::Zero(model.FreeDofCount());
+    if (factor.info() != Status::kOk) {
+      throw std::invalid_argument("contact: the structure is not stable");
+    }
+    // A point's weights lie within the band (its spring k n n^T is added to it), so K^-1's band
+    // gives every point's compliance n^T K^-1 n.
+    const SymmetricBandMatrix inverse = factor.InverseWithinBand();
     free_penalty_.assign(m, 0.0);
     stuck_penalty_.assign(m, 0.0);
     for (std::size_t k = 0; k < m; ++k) {
       const DofWeights& point = points_.points()[k];
       if (point.count == 0) continue;  // held by anchors: it never moves
-      unit.setZero();
-      for (int i = 0; i < point.count; ++i) unit[point.dof[i]] = point.n[i];
-      factor.SolveInPlace(unit);
-      const double compliance = point.Dot(unit);
+      const double compliance = point.QuadraticForm(inverse);
       if (!(compliance > 0.0)) throw std::invalid_argument("contact: the structure is not stable");
       free_penalty_[k] = options.penalty / compliance;
       stuck_penalty_[k] = free_penalty_[k];
       if (sites_.SiteOf(k) < 0) continue;  // a plate's corner: stuck, the plate is as free
-      double held = 0.0;                   // n^T K n
-      for (int a = 0; a < point.count; ++a) {
-        for (int b = 0; b < point.count; ++b) {
-          held += point.n[a] * stiffness(point.dof[a], point.dof[b]) * point.n[b];
-        }
-      }
+      const double held = point.QuadraticForm(stiffness);  // n^T K n
       stuck_penalty_[k] = options.penalty * std::min(held, kHeldStiffnessCap / compliance);
     }
     rest_.resize(m);
