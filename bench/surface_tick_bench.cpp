@@ -261,8 +261,9 @@ BENCHMARK(BM_TouchedDeviceTick)
 // The pressed resonator with contact, stiction and the Casimir pressure as a scene builds them
 // (FrameSceneForces): the pressure held at the contact's separation from below, where the rows
 // above let it grow through the contact's penetration (by 4 % at the contact's tolerance). The
-// hold leaves the pressure's stiffness a jump at the contact plane, where the landing step's
-// Newton iterates cycle until the step is cut.
+// hold leaves the pressure's stiffness a jump at the contact plane, where a kept factor's
+// correction throws the landing step's iterate far through it: NewtonDriver undoes it and
+// factors afresh where it started (without that the iterates cycled until the step was cut).
 void BM_TouchedDeviceTickHeld(benchmark::State& state) {
   TouchedDevice c;
   c.elements = static_cast<int>(state.range(0));

@@ -1,12 +1,14 @@
 // NewtonDriver's convergence at the residual's rounding floor, on a scheme written here whose
 // floor lies above the tolerance (as a fine mesh's K d does): the solve ends there, the bound is
 // formed once a solve, and the factor serves the next solve; and its matrix deferred to the
-// iterations that factor; and a prediction outside the domain taken back to its start.
+// iterations that factor; and a prediction outside the domain taken back to its start; and a
+// stale kept factor's correction undone.
 #include "cosmems/time/newton_driver.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace cosmems {
@@ -152,12 +154,64 @@ class BoundedScheme : public OneUnknownScheme {
   int backs_ = 0;
 };
 
+// k f(x) = b for f = sinh or atan, its stiffness k set between solves as a contact's may change
+// without the scheme forgetting its factor, its slope k f'(x) factored at the iterate, defined
+// for x < `bound` alone (Evaluate() fails beyond it). Undo() takes the iterate back to where the
+// last correction started when `undo`, and is refused otherwise.
+class StiffeningScheme : public OneUnknownScheme {
+ public:
+  StiffeningScheme(bool sinh, bool undo, double bound = std::numeric_limits<double>::infinity())
+      : sinh_(sinh), undo_(undo), bound_(bound) {}
+  void SetStiffness(double k) { k_ = k; }
+  int undos() const { return undos_; }
+
+  bool Evaluate(NewtonResidual& out) {
+    if (!(x_ < bound_)) return false;
+    const double f = sinh_ ? std::sinh(x_) : std::atan(x_);
+    residual_ = k_ * f - b_;
+    out.norm = std::abs(residual_);
+    out.reference = std::abs(k_ * f) + std::abs(b_);
+    return true;
+  }
+  NewtonFactor Factor(double /*shift*/) {
+    return FactorSlope(sinh_ ? k_ * std::cosh(x_) : k_ / (1.0 + x_ * x_));
+  }
+  NewtonCorrection Update() {
+    before_ = x_;
+    return OneUnknownScheme::Update();
+  }
+  bool Undo() {
+    if (!undo_) return false;
+    ++undos_;
+    x_ = before_;
+    return true;
+  }
+
+  // Converges at k = 1 with the load f(start) (the factor kept), then stiffens to k = `k` with
+  // the load k f(target), and solves again.
+  Status Restiffened(NewtonDriver& driver, double start, double k, double target) {
+    SetLoad(sinh_ ? std::sinh(start) : std::atan(start));
+    if (driver.Solve(*this, 1.0) != Status::kOk) return Status::kNotConverged;
+    SetStiffness(k);
+    SetLoad(k * (sinh_ ? std::sinh(target) : std::atan(target)));
+    driver.stats() = {};
+    return driver.Solve(*this, 1.0);
+  }
+
+ private:
+  bool sinh_, undo_;
+  double bound_;
+  double k_ = 1.0, before_ = 0.0;
+  int undos_ = 0;
+};
+
 }  // namespace newton_driver_test
 
 using newton_driver_test::BoundedScheme;
 using newton_driver_test::CubicScheme;
 using newton_driver_test::DeferringCubicScheme;
 using newton_driver_test::FloorScheme;
+using newton_driver_test::StiffeningScheme;
 
 // Where the kept factor is expected to serve, a scheme that can defer its matrix evaluates its
 // residual alone, and the matrix only when the iteration factors after all: the iterates and the
@@ -246,6 +300,58 @@ TEST(NewtonDriverTest, APredictionOutsideTheDomainStartsWhereItWasPredictedFrom)
   ASSERT_EQ(NewtonDriver().Solve(inside, nan), Status::kOk);
   EXPECT_NEAR(inside.x(), 0.5, 1e-12);
   EXPECT_EQ(inside.backs(), 0);
+}
+
+// A kept factor's correction that multiplies the residual by far more than a fresh one would is
+// undone, and the iteration factors afresh where it started: the scheme on sinh stiffened
+// 100-fold between two solves, and the kept factor of k = 1 throws the iterate from 0.01 out to
+// 51, where the residual is 10^22 times larger. Undone, the fresh factor at 0.01 converges to
+// 0.5 in a few corrections; without Undo, Newton on sinh creeps back from 51 by about one a
+// correction and runs out of iterations (25).
+TEST(NewtonDriverTest, AKeptCorrectionThatThrowsTheResidualUpIsUndone) {
+  for (const bool undo : {true, false}) {
+    NewtonDriver driver;
+    StiffeningScheme scheme(/*sinh=*/true, undo);
+    const Status status = scheme.Restiffened(driver, 0.01, 100.0, 0.5);
+    if (undo) {
+      ASSERT_EQ(status, Status::kOk);
+      EXPECT_NEAR(scheme.x(), 0.5, 1e-9);
+      EXPECT_EQ(scheme.undos(), 1);
+      EXPECT_LE(driver.stats().iterations, 7);
+    } else {
+      EXPECT_EQ(status, Status::kNotConverged);
+    }
+  }
+}
+
+// A kept factor's correction that leaves the domain (x < 2 here) is undone the same way, where a
+// fresh factor's would be pulled back along itself (Retreat, which this scheme refuses: without
+// Undo the solve fails at once).
+TEST(NewtonDriverTest, AKeptCorrectionThatLeavesTheDomainIsUndone) {
+  for (const bool undo : {true, false}) {
+    NewtonDriver driver;
+    StiffeningScheme scheme(/*sinh=*/true, undo, /*bound=*/2.0);
+    const Status status = scheme.Restiffened(driver, 0.01, 100.0, 0.5);
+    if (undo) {
+      ASSERT_EQ(status, Status::kOk);
+      EXPECT_NEAR(scheme.x(), 0.5, 1e-9);
+      EXPECT_EQ(scheme.undos(), 1);
+    } else {
+      EXPECT_EQ(status, Status::kNonFinite);
+    }
+  }
+}
+
+// A kept correction that grows the residual by less than the driver's threshold is Newton's to
+// carry on from: on atan stiffened tenfold the kept factor throws the iterate from 0.01 to 4.6,
+// the residual twice as large, and no undo follows; Newton on atan diverges from beyond
+// |x| = 1.39, and the iterates run off to infinity. The solve says so (non-finite) instead of
+// passing the increment test on an infinite iterate (an infinite correction against it).
+TEST(NewtonDriverTest, AnIterateRunOffToInfinityNeverPassesTheIncrementTest) {
+  NewtonDriver driver;
+  StiffeningScheme scheme(/*sinh=*/false, /*undo=*/true);
+  EXPECT_EQ(scheme.Restiffened(driver, 0.01, 10.0, 0.5), Status::kNonFinite);
+  EXPECT_EQ(scheme.undos(), 0);
 }
 
 }  // namespace cosmems

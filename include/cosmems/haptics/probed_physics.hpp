@@ -43,7 +43,11 @@ class ProbedPhysics : public HapticPhysics {
     stepper.parameters = GeneralizedAlphaParameters::FromSpectralRadius(options_.rho_inf);
     stepper.modes = options_.modes;
     stepper.newton.residual_tolerance = options_.residual_tolerance;
-    if (options_.path == TimePath::kModal) stepper.damping = options_.damping;
+    if (options_.path == TimePath::kModal) {
+      stepper.damping = options_.damping;
+    } else {
+      stepper.newton.reuse_contraction = options_.reuse_contraction;
+    }
     BeamStepperSetup setup = MakeBeamStepper(model, stepper, Eigen::MatrixXd::Zero(n, 1), &forces_);
     if (setup.status != Status::kOk) {
       throw std::runtime_error(std::string("haptic physics: the modal analysis failed: ") +

@@ -72,9 +72,9 @@ class NonlinearNewmarkIntegrator {
     // Sizes the factor's buffers now (rank-one part included), so that no step allocates them.
     (void)factor_.Compute(mass, 1.0, Eigen::VectorXd::Zero(n));
     for (Eigen::VectorXd* v :
-         {&d_,      &v_,        &a_,       &f_,      &d_new_,   &v_new_,  &a_new_,  &d_mid_,
-          &v_mid_,  &residual_, &work_,    &r_,      &f_mid_,   &d_star_, &v_star_, &d_save_,
-          &v_save_, &a_save_,   &r_start_, &r_save_, &scratch_, &elastic_}) {
+         {&d_,      &v_,        &a_,       &f_,      &d_new_,   &v_new_,   &a_new_,   &d_mid_,
+          &v_mid_,  &residual_, &work_,    &r_,      &f_mid_,   &d_star_,  &v_star_,  &d_save_,
+          &v_save_, &a_save_,   &r_start_, &r_save_, &scratch_, &elastic_, &d_before_}) {
       v->setZero(n);
     }
   }
@@ -274,6 +274,12 @@ class NonlinearNewmarkIntegrator {
     a_new_ = ca_ * (d_new_ - d_star_);
     return true;
   }
+  // The iterate before the last correction.
+  bool Undo() {
+    d_new_ = d_before_;
+    a_new_ = ca_ * (d_new_ - d_star_);
+    return true;
+  }
 
   // The rounding error of the residual's stiffness product K (d_mid + dk v_mid) (100 elements at
   // 100 us steps stalled at 7e-9 of the reference, a sixteenth of this bound).
@@ -311,6 +317,7 @@ class NonlinearNewmarkIntegrator {
 
   // d_(n+1) -= delta, a_(n+1) with it, and the sizes of both for the increment test.
   NewtonCorrection Update() {
+    d_before_ = d_new_;  // for Undo(); equal sizes: copies without allocating
     double increment2 = 0.0, displacement2 = 0.0;
     for (int i = 0; i < d_new_.size(); ++i) {
       const double delta = residual_[i];
@@ -370,7 +377,8 @@ class NonlinearNewmarkIntegrator {
   bool streak_ = false;             ///< whether linear_ holds the state (d_, v_, a_ do not)
   const Eigen::VectorXd* f_target_ = nullptr;
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
-      f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_, scratch_, elastic_;
+      f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_, scratch_, elastic_,
+      d_before_;
 };
 
 }  // namespace cosmems
