@@ -317,10 +317,10 @@ class NonlinearNewmarkIntegrator {
 
   // d_(n+1) -= delta, a_(n+1) with it, and the sizes of both for the increment test.
   NewtonCorrection Update() {
-    d_before_ = d_new_;  // for Undo(); equal sizes: copies without allocating
     double increment2 = 0.0, displacement2 = 0.0;
     for (int i = 0; i < d_new_.size(); ++i) {
       const double delta = residual_[i];
+      d_before_[i] = d_new_[i];  // for Undo()
       const double d = d_new_[i] - delta;
       increment2 += delta * delta;
       displacement2 += d * d;
