@@ -364,6 +364,7 @@ TEST(HapticStructureTest, TheHapticToleranceFeelsAsTheTightOne) {
   const HapticPhysicsOptions haptic = PressedResonator::Physics();
   HapticPhysicsOptions tight = haptic;
   tight.residual_tolerance = 1e-10;
+  tight.predicted_increment_tolerance = 0.0;  // every tick ends on an evaluated residual
   PressedResonator a(model, haptic), b(model, tight);
   double largest = 0.0, differs = 0.0;
   for (int tick = 0; tick < PressedResonator::kTicks; ++tick) {
@@ -384,6 +385,49 @@ TEST(HapticStructureTest, TheHapticToleranceFeelsAsTheTightOne) {
     HapticPhysicsOptions refused = haptic;
     refused.residual_tolerance = bad;
     ExpectRefusedByName(refused, "residual_tolerance");
+  }
+}
+
+// A tick whose kept factor's correction is small and predicted to leave the residual within the
+// tolerance ends without a last evaluation (HapticPhysicsOptions::predicted_increment_tolerance):
+// against the same press ending every tick on an evaluated residual and against the tight solve
+// (1e-10), over two cycles, the probe's forces stay within the bound above, with the same events,
+// for fewer force evaluations. Measured: the forces of the evaluated press exactly (every
+// prediction held, so every tick ended at the same iterate), 3.9e-11 N from the tight solve's,
+// 1163 evaluations against 1634.
+TEST(HapticStructureTest, APredictedCorrectionEndsATickAsAnEvaluatedOneWould) {
+  const FrameModel model(FoldedFlexure(FoldedFlexureDesign{}));
+  const HapticPhysicsOptions haptic = PressedResonator::Physics();
+  HapticPhysicsOptions evaluated = haptic, tight = haptic;
+  evaluated.predicted_increment_tolerance = 0.0;
+  tight.predicted_increment_tolerance = 0.0;
+  tight.residual_tolerance = 1e-10;
+  PressedResonator a(model, haptic), b(model, evaluated), c(model, tight);
+  double from_evaluated = 0.0, from_tight = 0.0;
+  for (int tick = 0; tick < 2 * PressedResonator::kTicks; ++tick) {
+    const int cycle_tick = tick % PressedResonator::kTicks;
+    ASSERT_EQ(a.Tick(cycle_tick), Status::kOk) << tick;
+    ASSERT_EQ(b.Tick(cycle_tick), Status::kOk) << tick;
+    ASSERT_EQ(c.Tick(cycle_tick), Status::kOk) << tick;
+    from_evaluated = std::max(from_evaluated, std::abs(a.force_n() - b.force_n()));
+    from_tight = std::max(from_tight, std::abs(a.force_n() - c.force_n()));
+  }
+  const double bound = 50.0 * 2.0 * a.effects.contact().tolerance();
+  EXPECT_LE(from_evaluated, bound);
+  EXPECT_LE(from_tight, bound);
+  EXPECT_LT(a.effects.evaluations, 0.8 * b.effects.evaluations);
+  for (PressedResonator* other : {&b, &c}) {
+    const ContactEvents& events = other->effects.contact().events();
+    EXPECT_EQ(a.effects.contact().events().contacts, events.contacts);
+    EXPECT_EQ(a.effects.contact().events().stuck, events.stuck);
+    EXPECT_EQ(a.effects.contact().events().releases, events.releases);
+  }
+  // A negative share, or one that would end a tick on a correction of a thousandth of the state,
+  // is refused by name.
+  for (const double bad : {-1e-6, 1e-2}) {
+    HapticPhysicsOptions refused = haptic;
+    refused.predicted_increment_tolerance = bad;
+    ExpectRefusedByName(refused, "predicted_increment_tolerance");
   }
 }
 

@@ -47,6 +47,7 @@ class ProbedPhysics : public HapticPhysics {
       stepper.damping = options_.damping;
     } else {
       stepper.newton.reuse_contraction = options_.reuse_contraction;
+      stepper.newton.predicted_increment_tolerance = options_.predicted_increment_tolerance;
     }
     BeamStepperSetup setup = MakeBeamStepper(model, stepper, Eigen::MatrixXd::Zero(n, 1), &forces_);
     if (setup.status != Status::kOk) {

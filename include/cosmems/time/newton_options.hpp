@@ -24,6 +24,12 @@ struct NewtonOptions {
   /// answer meets the same tolerances, only the path to it is cheaper. 0 refactors at every
   /// iteration (plain Newton); must lie in [0, 1). Values from 1e-3 to 0.5 measured alike.
   double reuse_contraction = 1e-3;
+  /// A kept factor's correction below predicted_increment_tolerance of the iterate, which the
+  /// contraction that factor last showed (doubled at each such end since) predicts to leave the
+  /// residual within a tenth of its tolerance, ends the iterations without evaluating the residual
+  /// again: the increment test with the contraction as its witness. 0 (the analyses'): every step
+  /// ends on an evaluated residual or the increment test. Must lie in [0, 1e-3].
+  double predicted_increment_tolerance = 0.0;
   /// A failed step is retried as two half steps, recursively, at most this deep (2^-8 dt).
   int max_cuts = 8;
   /// State changes a force may ask for once Newton has converged (a contact multiplier updated, a
@@ -49,6 +55,8 @@ inline NewtonOptions RodNewtonOptions() {
 inline void ValidateNewtonOptions(const NewtonOptions& options) {
   RequirePositive("newton.residual_tolerance", options.residual_tolerance);
   RequirePositive("newton.increment_tolerance", options.increment_tolerance);
+  RequireWithin("newton.predicted_increment_tolerance", options.predicted_increment_tolerance, 0.0,
+                1e-3);
   RequireWithin("newton.max_iterations", options.max_iterations, 1, 1000);
   RequireWithin("newton.max_cuts", options.max_cuts, 0, 50);
   RequireWithin("newton.max_settles", options.max_settles, 0, 100000);
