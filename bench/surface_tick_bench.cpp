@@ -67,9 +67,9 @@ Surface MakeSurface(const BeamModel<2>& model) {
 }
 
 // Times every call of `tick` (false: it failed) and sets the median, p99 and largest, on the
-// wall clock and on the thread's CPU clock.
+// wall clock and on the thread's CPU clock; returns the wall-clock times [us].
 template <typename Tick>
-void TimeTicks(benchmark::State& state, Tick&& tick) {
+std::vector<double> TimeTicks(benchmark::State& state, Tick&& tick) {
   std::vector<double> times, cpu_times;
   times.reserve(1 << 20);
   cpu_times.reserve(1 << 20);
@@ -91,8 +91,8 @@ void TimeTicks(benchmark::State& state, Tick&& tick) {
       break;
     }
   }
-  if (times.empty()) return;
-  const StepTiming timing = StepTiming::From(std::move(times));
+  if (times.empty()) return times;
+  const StepTiming timing = StepTiming::From(times);
   const StepTiming cpu = StepTiming::From(std::move(cpu_times));
   state.counters["median_us"] = timing.median_us;
   state.counters["p99_us"] = timing.p99_us;
@@ -100,6 +100,7 @@ void TimeTicks(benchmark::State& state, Tick&& tick) {
   state.counters["cpu_median_us"] = cpu.median_us;
   state.counters["cpu_p99_us"] = cpu.p99_us;
   state.counters["cpu_max_us"] = cpu.max_us;
+  return times;
 }
 
 void BM_SurfaceTick(benchmark::State& state) {
@@ -307,11 +308,23 @@ void BM_FixedWorkTick(benchmark::State& state) {
   double a = 0.999999, b = 1e-9;
   benchmark::DoNotOptimize(a);
   benchmark::DoNotOptimize(b);
-  TimeTicks(state, [&] {
+  const std::vector<double> times = TimeTicks(state, [&] {
     bench::MultiplyAddChains(chain, a, b, rounds);
     benchmark::DoNotOptimize(chain.data());
     return true;
   });
+  // The stalls: ticks longer than the median by more than kStallUs, counted per millisecond of
+  // ticking (a periodic interrupt shows as its rate), and their median excess.
+  constexpr double kStallUs = 20.0;
+  const double median = StepTiming::From(times).median_us;
+  std::vector<double> excess;
+  double elapsed_us = 0.0;
+  for (const double t : times) {
+    elapsed_us += t;
+    if (t > median + kStallUs) excess.push_back(t - median);
+  }
+  state.counters["stalls_per_ms"] = 1e3 * static_cast<double>(excess.size()) / elapsed_us;
+  state.counters["stall_median_us"] = StepTiming::From(excess).median_us;
 }
 BENCHMARK(BM_FixedWorkTick)
     ->Arg(20)

@@ -62,6 +62,35 @@ TEST(FrameSubstrateContactTest, ForceAndTangentAreThePenaltysEnergyDifferences) 
                                               1e-6, 1e-7);
 }
 
+// The contact keeps every point's gap for the last state it saw (a tick's Settle, ProjectMotion
+// and Commit share one) and knows a state by its values: a caller's vector changed in place
+// between two calls is a new state, whose force and settling are a fresh contact's there, to the
+// bit (the same arithmetic).
+TEST(FrameSubstrateContactTest, AVectorChangedInPlaceIsANewState) {
+  const test::PlateOnFourBeams plate;
+  const FrameModel model(plate.structure);
+  const int n = model.FreeDofCount(), bandwidth = model.Stiffness().bandwidth();
+  auto force = [&](FrameSubstrateContact& contact, const Eigen::VectorXd& d) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+    ForceTangent tangent(n, bandwidth);
+    EXPECT_TRUE(contact.Evaluate(d, f, tangent));
+    return f;
+  };
+  const Eigen::VectorXd deep = PressedTilted(model, 1.02e-6, 0.01);
+  const Eigen::VectorXd shallow = PressedTilted(model, 1.01e-6, -0.005);
+  FrameSubstrateContact contact(model, Substrate()), fresh(model, Substrate());
+  Eigen::VectorXd state = deep;
+  const Eigen::VectorXd at_deep = force(contact, state);
+  const double* buffer = state.data();
+  state = shallow;
+  ASSERT_EQ(state.data(), buffer);  // the same buffer, new values
+  const Eigen::VectorXd at_shallow = force(contact, state);
+  EXPECT_FALSE(at_shallow.isApprox(at_deep));
+  EXPECT_TRUE(at_shallow == force(fresh, shallow));
+  EXPECT_EQ(contact.Settle(state), fresh.Settle(shallow));
+  EXPECT_TRUE(force(contact, state) == force(fresh, shallow));
+}
+
 // The probe presses the plate's centre 3 um down over a substrate 1 um below it: the plate comes
 // to rest on the contact plane, within the tolerance (1e-4 of the gap), and the probe's force is
 // the coupling's compression alone, k_c (face - g - (y_p - r)), the plate no longer moving.

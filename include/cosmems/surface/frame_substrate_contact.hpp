@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -119,6 +120,8 @@ class FrameSubstrateContact final : public FrameElementForce {
       stuck_penalty_[k] = options.penalty * std::min(held, kHeldStiffnessCap / compliance);
     }
     rest_.resize(m);
+    gaps_.assign(m, 0.0);
+    gaps_state_.setZero(model.FreeDofCount());
     nearest_ = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < m; ++k) {
       const FrameContactPoints::Point& point = points_.points()[k];
@@ -143,9 +146,10 @@ class FrameSubstrateContact final : public FrameElementForce {
   }
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
+    const std::vector<double>& gaps = Gaps(d);
     for (std::size_t k = 0; k < rest_.size(); ++k) {
       if (!Holds(k)) continue;
-      const double g = Gap(k, d);
+      const double g = gaps[k];
       if (!std::isfinite(g)) return false;
       const double p = Reaction(k, g);
       if (!stuck_[k] && p <= 0.0) continue;  // a stuck point holds both ways, at any p
@@ -187,10 +191,11 @@ class FrameSubstrateContact final : public FrameElementForce {
   }
 
   bool Settle(const Eigen::VectorXd& d) override {
+    const std::vector<double>& gaps = Gaps(d);
     bool settled = true;
     for (std::size_t k = 0; k < rest_.size(); ++k) {
       if (!Holds(k)) continue;
-      const double g = Gap(k, d);
+      const double g = gaps[k];
       // Through the plane (or off it, when stuck), or still pushing while clear of it: a
       // multiplier from a deeper iterate must not hold the structure up off the plane.
       const double violation = stuck_[k] ? std::abs(g) : -g;
@@ -202,8 +207,8 @@ class FrameSubstrateContact final : public FrameElementForce {
       }
     }
     if (!settled || !stiction_) return settled;
-    Stick(d);
-    return !Peel(d);
+    Stick(gaps);
+    return !Peel(gaps);
   }
 
   void Commit(const Eigen::VectorXd& d) override {
@@ -215,8 +220,9 @@ class FrameSubstrateContact final : public FrameElementForce {
     }
     ContactState state = ContactState::kFree;
     bool quiet = true;
+    const std::vector<double>& gaps = Gaps(d);
     for (std::size_t k = 0; k < rest_.size(); ++k) {
-      const double g = Gap(k, d);
+      const double g = gaps[k];
       quiet = quiet && lambda_[k] == 0.0 && !stuck_[k];
       starts_.Record(k, Holds(k) ? Reaction(k, g) : lambda_[k]);
       touching_[k] = stuck_[k] || (Holds(k) && Touching(k, g));
@@ -252,9 +258,10 @@ class FrameSubstrateContact final : public FrameElementForce {
 
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     int count = 0;
+    const std::vector<double>& gaps = Gaps(d);
     for (std::size_t k = 0; k < rest_.size(); ++k) {
       if (!Holds(k)) continue;
-      if (stuck_[k] || (Touching(k, Gap(k, d)) && points_.Along(points_.points()[k], v) < 0.0)) {
+      if (stuck_[k] || (Touching(k, gaps[k]) && points_.Along(points_.points()[k], v) < 0.0)) {
         active_[count++] = static_cast<int>(k);
       }
     }
@@ -362,16 +369,18 @@ class FrameSubstrateContact final : public FrameElementForce {
     const FrameAdhesionSites::Site& s = sites_.sites().at(static_cast<std::size_t>(site));
     if (!stuck_[s.point]) return std::numeric_limits<double>::quiet_NaN();
     bool factored = false;
-    return SiteReleaseRate(s, d, factored);
+    return SiteReleaseRate(s, Gaps(d), factored);
   }
 
   /// The energy [J] the release of body b's plate would free in the state d, (1/2) p^T C p over
   /// its corners (+inf when only their springs held it), and the work of adhesion of its face [J].
   std::pair<double, double> PlateEnergies(int b, const Eigen::VectorXd& d) {
     const FrameAdhesionSites::Plate& plate = sites_.plates().at(static_cast<std::size_t>(b));
-    if (!FactorCompliance(d)) return {std::numeric_limits<double>::quiet_NaN(), 0.0};
+    const std::vector<double>& gaps = Gaps(d);
+    if (!FactorCompliance(gaps)) return {std::numeric_limits<double>::quiet_NaN(), 0.0};
     const double joule = model_.units().force * length_m_;
-    return {PlateEnergy(plate, d) * joule, adhesion_energy_ * plate.area * length_m_ * length_m_};
+    return {PlateEnergy(plate, gaps) * joule,
+            adhesion_energy_ * plate.area * length_m_ * length_m_};
   }
   const ContactEvents& events() const { return events_; }
 
@@ -396,6 +405,22 @@ class FrameSubstrateContact final : public FrameElementForce {
   double Gap(std::size_t k, const Eigen::VectorXd& d) const {
     return rest_[k] + points_.points()[k].Dot(d);
   }
+  // Every point's gap for d. A tick hands the same state to Settle(), ProjectMotion() and
+  // Commit() in turn (and often to the Evaluate() before them): its gaps, a pass over every
+  // point's weights that each of them and Settle()'s stiction passes made afresh, are formed once
+  // and kept with the state they belong to, which is known by its values (the callers' vectors
+  // are buffers they reuse).
+  const std::vector<double>& Gaps(const Eigen::VectorXd& d) {
+    const auto bytes = sizeof(double) * static_cast<std::size_t>(d.size());
+    if (gaps_known_ && d.size() == gaps_state_.size() &&
+        std::memcmp(gaps_state_.data(), d.data(), bytes) == 0) {
+      return gaps_;
+    }
+    for (std::size_t k = 0; k < rest_.size(); ++k) gaps_[k] = Gap(k, d);
+    gaps_state_ = d;  // equal sizes: copies without allocating
+    gaps_known_ = true;
+    return gaps_;
+  }
   // A point's k: a stuck one's is held by its neighbours, a free one's by the structure.
   double Penalty(std::size_t k) const { return stuck_[k] ? stuck_penalty_[k] : free_penalty_[k]; }
   double Reaction(std::size_t k, double g) const {
@@ -418,15 +443,15 @@ class FrameSubstrateContact final : public FrameElementForce {
 
   // Pressed member nodes stick; a body sticks when it lies flat (every corner touching) and is
   // pressed as a whole.
-  void Stick(const Eigen::VectorXd& d) {
+  void Stick(const std::vector<double>& gaps) {
     for (const FrameAdhesionSites::Site& site : sites_.sites()) {
-      if (Reaction(site.point, Gap(site.point, d)) > 0.0) Fix(site.point);
+      if (Reaction(site.point, gaps[site.point]) > 0.0) Fix(site.point);
     }
     for (const FrameAdhesionSites::Plate& plate : sites_.plates()) {
       double pressed = 0.0;
       bool flat = true;
       for (int k = plate.first; k < plate.first + 4; ++k) {
-        const double g = Gap(k, d);
+        const double g = gaps[k];
         flat = flat && Touching(k, g);
         pressed += Reaction(k, g);
       }
@@ -437,14 +462,14 @@ class FrameSubstrateContact final : public FrameElementForce {
 
   // Releases the stuck node or plate whose energy release rate exceeds Gamma the most; returns
   // whether one was released.
-  bool Peel(const Eigen::VectorXd& d) {
+  bool Peel(const std::vector<double>& gaps) {
     bool factored = false;
     int chosen = -1;  // a site's point, or a plate's first corner
     double worst = adhesion_energy_;
     for (const FrameAdhesionSites::Site& site : sites_.sites()) {
       const std::size_t k = site.point;
-      if (!stuck_[k] || Reaction(k, Gap(k, d)) >= 0.0) continue;  // pressed: no peel
-      const double rate = SiteReleaseRate(site, d, factored);
+      if (!stuck_[k] || Reaction(k, gaps[k]) >= 0.0) continue;  // pressed: no peel
+      const double rate = SiteReleaseRate(site, gaps, factored);
       if (rate > worst) {  // false for NaN: no crack front there
         worst = rate;
         chosen = site.point;
@@ -454,11 +479,11 @@ class FrameSubstrateContact final : public FrameElementForce {
     for (const FrameAdhesionSites::Plate& plate : sites_.plates()) {
       if (!stuck_[plate.first]) continue;
       double pull = 0.0;
-      for (int k = plate.first; k < plate.first + 4; ++k) pull += Reaction(k, Gap(k, d));
+      for (int k = plate.first; k < plate.first + 4; ++k) pull += Reaction(k, gaps[k]);
       if (!(pull < 0.0)) continue;  // pressed as a whole: no release
-      if (!factored && !FactorCompliance(d)) continue;
+      if (!factored && !FactorCompliance(gaps)) continue;
       factored = true;
-      const double rate = PlateEnergy(plate, d) / plate.area * per_length;
+      const double rate = PlateEnergy(plate, gaps) / plate.area * per_length;
       if (rate > worst) {
         worst = rate;
         chosen = plate.first;
@@ -478,7 +503,7 @@ class FrameSubstrateContact final : public FrameElementForce {
   // release frees, or at a free end held alone the compliance method's p^2 theta / b; +inf at a
   // lone node elsewhere (it holds no area), NaN inside a stuck run (no crack front) or when the
   // compliance cannot be factored.
-  double SiteReleaseRate(const FrameAdhesionSites::Site& site, const Eigen::VectorXd& d,
+  double SiteReleaseRate(const FrameAdhesionSites::Site& site, const std::vector<double>& gaps,
                          bool& factored) {
     const std::vector<FrameAdhesionSites::Site>& all = sites_.sites();
     auto stuck = [&](int s) { return s >= 0 && stuck_[all[s].point]; };
@@ -488,11 +513,11 @@ class FrameSubstrateContact final : public FrameElementForce {
     if (before) freed += site.s - all[site.previous].s;
     if (after) freed += all[site.next].s - site.s;
     if (freed == 0.0 && !site.free_end) return std::numeric_limits<double>::infinity();
-    if (!factored && !FactorCompliance(d)) return std::numeric_limits<double>::quiet_NaN();
+    if (!factored && !FactorCompliance(gaps)) return std::numeric_limits<double>::quiet_NaN();
     factored = true;
     const double per_length = model_.units().force / length_m_;
     const std::size_t k = site.point;
-    const double p = Reaction(k, Gap(k, d));
+    const double p = Reaction(k, gaps[k]);
     const DofWeights& n = points_.points()[k];
     if (freed == 0.0) {  // a free end held alone: its slope under a unit force, its spring removed
       const double s = n.Dot(Response(0, n));
@@ -507,20 +532,20 @@ class FrameSubstrateContact final : public FrameElementForce {
     const bool partner_held = before ? stuck(partner.previous) : stuck(partner.next);
     std::array<int, 2> group{site.point, partner.point};
     const int count = !partner_held && !partner.free_end ? 2 : 1;
-    return GroupEnergy(group.data(), count, d) / (site.width * freed) * per_length;
+    return GroupEnergy(group.data(), count, gaps) / (site.width * freed) * per_length;
   }
 
   // The energy (internal) freed by releasing the plate's four corners together.
-  double PlateEnergy(const FrameAdhesionSites::Plate& plate, const Eigen::VectorXd& d) {
+  double PlateEnergy(const FrameAdhesionSites::Plate& plate, const std::vector<double>& gaps) {
     const std::array<int, 4> group{plate.first, plate.first + 1, plate.first + 2, plate.first + 3};
-    return GroupEnergy(group.data(), 4, d);
+    return GroupEnergy(group.data(), 4, gaps);
   }
 
   // (1/2) p^T C p over the `count` points `group` under their reactions p, C their compliance
   // with their springs removed: from S = N^T A^-1 N (A the factored matrix with the springs),
   // C = S + S (K^-1 - S)^-1 S (Woodbury), K their penalties; +inf when K^-1 - S is not definite
-  // (the springs held the points alone). Needs the compliance factored for d.
-  double GroupEnergy(const int* group, int count, const Eigen::VectorXd& d) {
+  // (the springs held the points alone). Needs the compliance factored for the state of `gaps`.
+  double GroupEnergy(const int* group, int count, const std::vector<double>& gaps) {
     using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
     using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
     Small s(count, count), rest(count, count);
@@ -528,7 +553,7 @@ class FrameSubstrateContact final : public FrameElementForce {
     for (int i = 0; i < count; ++i) {
       const DofWeights& n = points_.points()[group[i]];
       Response(i, n);
-      p[i] = Reaction(group[i], Gap(group[i], d));
+      p[i] = Reaction(group[i], gaps[group[i]]);
     }
     for (int i = 0; i < count; ++i) {
       for (int j = 0; j < count; ++j) s(i, j) = points_.points()[group[i]].Dot(responses_[j]);
@@ -551,10 +576,10 @@ class FrameSubstrateContact final : public FrameElementForce {
   }
 
   // Factors K plus the springs of the points holding; false if it is not definite.
-  bool FactorCompliance(const Eigen::VectorXd& d) {
+  bool FactorCompliance(const std::vector<double>& gaps) {
     springs_.mutable_data() = model_.Stiffness().data();
     for (std::size_t k = 0; k < rest_.size(); ++k) {
-      if (!Holds(k) || (!stuck_[k] && Reaction(k, Gap(k, d)) <= 0.0)) continue;
+      if (!Holds(k) || (!stuck_[k] && Reaction(k, gaps[k]) <= 0.0)) continue;
       const DofWeights& point = points_.points()[k];
       for (int a = 0; a < point.count; ++a) {
         for (int b = 0; b < point.count; ++b) {
@@ -604,6 +629,9 @@ class FrameSubstrateContact final : public FrameElementForce {
   BandCholesky compliance_;
   std::array<Eigen::VectorXd, 4> responses_;  ///< A^-1 n for up to four released points
   StepStartMultipliers starts_;
+  std::vector<double> gaps_;    ///< every point's gap at gaps_state_ (Gaps)
+  Eigen::VectorXd gaps_state_;  ///< the state gaps_ belongs to
+  bool gaps_known_ = false;
 };
 
 }  // namespace cosmems
