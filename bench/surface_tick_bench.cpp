@@ -316,7 +316,7 @@ void BM_FixedWorkTick(benchmark::State& state) {
   // The stalls: ticks longer than the median by more than kStallUs, counted per millisecond of
   // ticking (a periodic interrupt shows as its rate), and their median excess.
   constexpr double kStallUs = 20.0;
-  const double median = StepTiming::From(times).median_us;
+  const double median = state.counters["median_us"];
   std::vector<double> excess;
   double elapsed_us = 0.0;
   for (const double t : times) {

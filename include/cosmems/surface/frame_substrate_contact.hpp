@@ -120,8 +120,6 @@ class FrameSubstrateContact final : public FrameElementForce {
       stuck_penalty_[k] = options.penalty * std::min(held, kHeldStiffnessCap / compliance);
     }
     rest_.resize(m);
-    gaps_.assign(m, 0.0);
-    gaps_state_.setZero(model.FreeDofCount());
     nearest_ = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < m; ++k) {
       const FrameContactPoints::Point& point = points_.points()[k];
@@ -131,6 +129,8 @@ class FrameSubstrateContact final : public FrameElementForce {
       for (int i = 0; i < point.count; ++i) reach += std::abs(point.n[i]);
       reach_ = std::max(reach_, reach);
     }
+    gaps_ = rest_;  // the gaps at rest
+    gaps_state_.setZero(model.FreeDofCount());
     lambda_.assign(m, 0.0);
     committed_lambda_.assign(m, 0.0);
     stuck_.assign(m, 0);
@@ -412,13 +412,11 @@ class FrameSubstrateContact final : public FrameElementForce {
   // are buffers they reuse).
   const std::vector<double>& Gaps(const Eigen::VectorXd& d) {
     const auto bytes = sizeof(double) * static_cast<std::size_t>(d.size());
-    if (gaps_known_ && d.size() == gaps_state_.size() &&
-        std::memcmp(gaps_state_.data(), d.data(), bytes) == 0) {
+    if (d.size() == gaps_state_.size() && std::memcmp(gaps_state_.data(), d.data(), bytes) == 0) {
       return gaps_;
     }
     for (std::size_t k = 0; k < rest_.size(); ++k) gaps_[k] = Gap(k, d);
     gaps_state_ = d;  // equal sizes: copies without allocating
-    gaps_known_ = true;
     return gaps_;
   }
   // A point's k: a stuck one's is held by its neighbours, a free one's by the structure.
@@ -631,7 +629,6 @@ class FrameSubstrateContact final : public FrameElementForce {
   StepStartMultipliers starts_;
   std::vector<double> gaps_;    ///< every point's gap at gaps_state_ (Gaps)
   Eigen::VectorXd gaps_state_;  ///< the state gaps_ belongs to
-  bool gaps_known_ = false;
 };
 
 }  // namespace cosmems

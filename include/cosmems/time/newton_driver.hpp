@@ -292,7 +292,6 @@ class NewtonDriver {
   static constexpr bool DefersMatrix() {
     return decltype(Defers<Scheme>(nullptr, 0))::value;
   }
-  // Whether the kept factor serves this matrix family and contracted enough last time.
   // Whether a kept factor's correction ends the iterations unevaluated: small, and by the
   // contraction the factor last showed, leaving the residual within a tenth of the tolerance.
   // A factor's contraction grows as the state moves away from where it was formed, and an
@@ -304,6 +303,7 @@ class NewtonDriver {
            std::ldexp(contraction_, unmeasured_) * norm <= kPredictionMargin * tolerance;
   }
 
+  // Whether the kept factor serves this matrix family and contracted enough last time.
   bool KeptMayServe(double key) const {
     return options_.reuse_contraction > 0.0 && key_ == key &&
            contraction_ <= options_.reuse_contraction;
