@@ -5,6 +5,7 @@
 #include "allocation_counter.hpp"
 #include "cosmems/analysis/modal_reduction.hpp"
 #include "cosmems/beam/stretching_force.hpp"
+#include "cosmems/linalg/symmetric_band_pair.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/modal_model.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
@@ -98,6 +99,20 @@ TEST(NoAllocationTest, NonlinearStepsAllocateNothing) {
   EXPECT_EQ(test::AllocationsDuring(50, [&] { status = integrator.Step(f); }), 0);
   EXPECT_EQ(status, Status::kOk);
   EXPECT_GT(integrator.last_stats().evaluations, 1);  // Newton really iterated
+}
+
+// The residual's paired band products, by a fixed kernel (11) and by the general loop (7).
+TEST(NoAllocationTest, PairedBandProductsAllocateNothing) {
+  for (int bw : {7, 11}) {
+    SymmetricBandMatrix a(30, bw), b(30, bw);
+    a.mutable_data().setConstant(1.0);
+    b.mutable_data().setConstant(2.0);
+    SymmetricBandPair pair(a, b);
+    const Eigen::VectorXd x = Eigen::VectorXd::Ones(30);
+    Eigen::VectorXd ax(30), bz(30);
+    EXPECT_EQ(test::AllocationsDuring(10, [&] { pair.Multiply(x, x, ax, bz); }), 0) << bw;
+    EXPECT_EQ(bz[15], 2.0 * (2 * bw + 1));  // an interior row: 2 bw + 1 entries of 2
+  }
 }
 
 // Mid-plane stretching: a rank-one tangent part, renewed at every iteration on a band factor

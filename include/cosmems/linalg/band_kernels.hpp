@@ -11,34 +11,41 @@ namespace cosmems::internal {
 // unroll. Beams have W = 5 (planar) and W = 11 (spatial); DispatchBandwidth() picks the
 // instantiation. Pointers are __restrict: outputs never alias the matrix or the input.
 
+/// Two doubles in one SSE register (GCC's and Clang's vector extension): the lanes of two band
+/// products taken together, which the baseline x86-64 target (no -march) otherwise computes one
+/// scalar at a time.
+typedef double DoublePair __attribute__((vector_size(16)));
+
 /// y += alpha A x for a symmetric band matrix, column by column: column j gives y_j its dot
 /// product with x_j ... x_(j+W) and adds A(j+k, j) x_j to the W sums still open below it, which
 /// ride along in registers. Each stored entry is loaded once, where a row by row product loads
 /// the lower triangle's entries across columns, strided; it is the faster of the two
 /// (doc/speed.md, "Kernel choices"). With kAdd false it stores y = alpha A x instead, y needing
-/// no zeroing beforehand.
-template <int W, bool kAdd = true>
-void SymmetricBandMultiplyAdd(const double* __restrict a, int stride, int n,
-                              const double* __restrict x, double alpha, double* __restrict y) {
-  double open[W + 1] = {};  // open[k]: what the columns before j add to row j + k
+/// no zeroing beforehand. T is double, or DoublePair for two matrices of one pattern multiplied
+/// at once (SymmetricBandPair): each lane then takes the same operations in the same order as a
+/// product of its own.
+template <int W, bool kAdd = true, typename T = double>
+void SymmetricBandMultiplyAdd(const T* __restrict a, int stride, int n, const T* __restrict x,
+                              double alpha, T* __restrict y) {
+  T open[W + 1] = {};  // open[k]: what the columns before j add to row j + k
   int j = 0;
   for (; j + W < n; ++j) {  // interior columns: constant trip counts, unrolled
-    const double* column = a + static_cast<long>(j) * stride;
-    const double xj = x[j];
-    double sum = open[0] + column[0] * xj;
+    const T* column = a + static_cast<long>(j) * stride;
+    const T xj = x[j];
+    T sum = open[0] + column[0] * xj;
     for (int k = 1; k <= W; ++k) sum += column[k] * x[j + k];
     y[j] = kAdd ? y[j] + alpha * sum : alpha * sum;
     for (int k = 1; k <= W; ++k) open[k - 1] = open[k] + column[k] * xj;
-    open[W] = 0.0;
+    open[W] = T{};
   }
   for (; j < n; ++j) {  // the last W columns, cut short by the matrix's end
-    const double* column = a + static_cast<long>(j) * stride;
-    const double xj = x[j];
-    double sum = open[0] + column[0] * xj;
+    const T* column = a + static_cast<long>(j) * stride;
+    const T xj = x[j];
+    T sum = open[0] + column[0] * xj;
     for (int k = 1; k <= W && j + k < n; ++k) sum += column[k] * x[j + k];
     y[j] = kAdd ? y[j] + alpha * sum : alpha * sum;
-    for (int k = 1; k <= W; ++k) open[k - 1] = open[k] + (j + k < n ? column[k] * xj : 0.0);
-    open[W] = 0.0;
+    for (int k = 1; k <= W; ++k) open[k - 1] = j + k < n ? open[k] + column[k] * xj : open[k];
+    open[W] = T{};
   }
 }
 

@@ -11,6 +11,7 @@
 #include "cosmems/core/validation.hpp"
 #include "cosmems/linalg/band_rank_one_cholesky.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
+#include "cosmems/linalg/symmetric_band_pair.hpp"
 #include "cosmems/time/generalized_alpha_parameters.hpp"
 #include "cosmems/time/initial_acceleration.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
@@ -55,6 +56,7 @@ class NonlinearNewmarkIntegrator {
                              NewtonOptions options = {})
       : mass_(mass),
         stiffness_(stiffness),
+        products_(mass, stiffness),
         damping_(damping),
         force_(force),
         p_(parameters),
@@ -236,12 +238,11 @@ class NonlinearNewmarkIntegrator {
     const bool damped = damping_.mass != 0.0 || damping_.stiffness != 0.0;
     if (damped) v_mid_ = (1.0 - af) * (v_star_ + (gamma * h) * a_new_) + af * v_;
     if (damping_.mass != 0.0) work_ += damping_.mass * v_mid_;
-    mass_.Multiply(work_, residual_);
     if (damping_.stiffness != 0.0) {
       elastic_ = d_mid + damping_.stiffness * v_mid_;
-      stiffness_.Multiply(elastic_, work_);
+      products_.Multiply(work_, elastic_, residual_, work_);
     } else {
-      stiffness_.Multiply(d_mid, work_);
+      products_.Multiply(work_, d_mid, residual_, work_);
     }
     // R = M (..) + K (..) + r - f_mid and the sizes of the terms, in one pass over the vectors.
     double mass2 = 0.0, stiffness2 = 0.0, force2 = 0.0, norm2 = 0.0;
@@ -359,6 +360,7 @@ class NonlinearNewmarkIntegrator {
 
   const SymmetricBandMatrix& mass_;
   const SymmetricBandMatrix& stiffness_;
+  SymmetricBandPair products_;  ///< M and K side by side: the residual's two products in one pass
   RayleighDamping damping_;
   NonlinearForce& force_;
   GeneralizedAlphaParameters p_;
