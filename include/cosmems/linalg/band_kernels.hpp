@@ -49,6 +49,23 @@ void SymmetricBandMultiplyAdd(const T* __restrict a, int stride, int n, const T*
   }
 }
 
+/// SymmetricBandMultiplyAdd for a bandwidth known only at run time (no fixed kernel): the same
+/// columns, the band's length a loop bound. T as there.
+template <typename T>
+void SymmetricBandMultiplyAddAnyWidth(const T* __restrict a, int stride, int n, int bandwidth,
+                                      const T* __restrict x, double alpha, T* __restrict y) {
+  for (int j = 0; j < n; ++j) {
+    const T* column = a + static_cast<long>(j) * stride;
+    T sum = column[0] * x[j];
+    const int last = std::min(n - 1, j + bandwidth);
+    for (int i = j + 1; i <= last; ++i) {
+      y[i] += alpha * column[i - j] * x[j];
+      sum += column[i - j] * x[i];
+    }
+    y[j] += alpha * sum;
+  }
+}
+
 /// Solves L D L^T x = b in place, L unit lower with L(j+k, j) at unit[j stride + k] and 1 / D_j
 /// at inverse[j], with two hooks for the work around a solve: b_i = rhs(i) is made just before
 /// the forward sweep needs it, and solved(j, x_j) is called as the backward sweep finds x_j.

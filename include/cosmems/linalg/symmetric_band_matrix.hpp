@@ -59,15 +59,8 @@ class SymmetricBandMatrix {
                                                              alpha, y.data());
     });
     if (fixed) return;
-    for (int j = 0; j < size_; ++j) {
-      double sum = data_(0, j) * x[j];
-      const int last = std::min(size_ - 1, j + bandwidth_);
-      for (int i = j + 1; i <= last; ++i) {
-        y[i] += alpha * data_(i - j, j) * x[j];
-        sum += data_(i - j, j) * x[i];
-      }
-      y[j] += alpha * sum;
-    }
+    internal::SymmetricBandMultiplyAddAnyWidth(data_.data(), stride, size_, bandwidth_, x.data(),
+                                               alpha, y.data());
   }
 
   /// A bound on the rounding error of a computed A x (2-norm): each of its entries sums at most

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,8 +14,8 @@ namespace cosmems {
 /// held entry by entry side by side, so that A x and B z are formed in one pass: each paired
 /// operation does both products' work, which the scalar kernel does one at a time. The results
 /// equal A.Multiply(x) and B.Multiply(z) to the bit (each lane takes the same operations in the
-/// same order), for a bandwidth without a fixed kernel too (SymmetricBandMatrix's general loop,
-/// paired). A copy: later changes to A or B do not reach it.
+/// same order), for a bandwidth without a fixed kernel too (the same run-time-bandwidth kernel). A
+/// copy: later changes to A or B do not reach it.
 class SymmetricBandPair {
  public:
   SymmetricBandPair(const SymmetricBandMatrix& a, const SymmetricBandMatrix& b)
@@ -48,7 +47,11 @@ class SymmetricBandPair {
       internal::SymmetricBandMultiplyAdd<decltype(w)::value, false>(
           entries_.data(), stride_, n_, inputs_.data(), 1.0, outputs_.data());
     });
-    if (!fixed) MultiplyAnyBandwidth();
+    if (!fixed) {
+      for (int i = 0; i < n_; ++i) outputs_[i] = internal::DoublePair{};
+      internal::SymmetricBandMultiplyAddAnyWidth(entries_.data(), stride_, n_, stride_ - 1,
+                                                 inputs_.data(), 1.0, outputs_.data());
+    }
     for (int i = 0; i < n_; ++i) {
       ax[i] = outputs_[i][0];
       bz[i] = outputs_[i][1];
@@ -56,22 +59,6 @@ class SymmetricBandPair {
   }
 
  private:
-  // outputs_ = the pair times inputs_, by SymmetricBandMatrix::MultiplyAdd's loop (the same
-  // operations, so the same bits) for a bandwidth without a fixed kernel.
-  void MultiplyAnyBandwidth() {
-    for (int i = 0; i < n_; ++i) outputs_[i] = internal::DoublePair{};
-    for (int j = 0; j < n_; ++j) {
-      const internal::DoublePair* column = entries_.data() + static_cast<size_t>(j) * stride_;
-      internal::DoublePair sum = column[0] * inputs_[j];
-      const int last = std::min(n_ - 1, j + stride_ - 1);
-      for (int i = j + 1; i <= last; ++i) {
-        outputs_[i] += column[i - j] * inputs_[j];
-        sum += column[i - j] * inputs_[i];
-      }
-      outputs_[j] += sum;
-    }
-  }
-
   int n_ = 0, stride_ = 0;
   std::vector<internal::DoublePair> entries_;
   std::vector<internal::DoublePair> inputs_, outputs_;
