@@ -80,6 +80,25 @@ TEST(SymmetricBandMatrixTest, MultiplyAndConversionsAgreeWithDense) {
   EXPECT_EQ(a(2, 5), a(5, 2));
 }
 
+// The largest row sum of |A| against the dense matrix's (an indefinite band, with negative
+// entries, for the absolute values), and ProductRoundOff within the ceiling it gives, for smooth
+// and for alternating x (where |A| |x| and |A x| differ most).
+TEST(SymmetricBandMatrixTest, TheAbsoluteRowSumBoundsTheProductRoundOff) {
+  for (int bw : {0, 3, 11}) {
+    SymmetricBandMatrix a = RandomSpdBand(30, bw, 4);
+    for (int j = 0; j < 30; j += 3) a.Add(j, j, -2.0 * a(j, j));
+    const double expected = a.ToDense().cwiseAbs().rowwise().sum().maxCoeff();
+    EXPECT_NEAR(a.AbsoluteRowSumMax(), expected, 1e-14 * expected) << bw;
+    Eigen::VectorXd work(30);
+    const Eigen::VectorXd smooth = Eigen::VectorXd::LinSpaced(30, -1.0, 2.0);
+    const Eigen::VectorXd alternating =
+        smooth.unaryExpr([](double v) { return std::cos(1e3 * v); });
+    for (const Eigen::VectorXd& x : {smooth, alternating}) {
+      EXPECT_LE(a.ProductRoundOff(x, work), a.ProductRoundOffFactor() * expected * x.norm()) << bw;
+    }
+  }
+}
+
 class BandSolverTest : public ::testing::TestWithParam<std::tuple<int, int>> {};
 
 // Relative forward error of a well-conditioned system (condition number < 10 by diagonal

@@ -12,6 +12,8 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 #include "force_differences.hpp"
@@ -274,6 +276,16 @@ TEST(FrameGapIntegralTest, AMemberNearlyTouchingTakesTheForceOfItsEnergy) {
   std::printf("member at 1 %% of its gap: the fixed rule misses the force by %.2g\n", miss);
   EXPECT_GT(miss, 1e-2);
 
+  // The capacitance, a sum over the halved strips' points: against eps0 int b / g dx by the fine
+  // rule (the two agree to ~3e-11, 1/g varying less than the pressures: 1e-9 asserted).
+  const FrameGapForce<ElectrostaticPressure> electrode(model, ElectrostaticPressure{1.0},
+                                                       FrameGapOptions{gap});
+  const double capacitance =
+      OverTheMember(model, d, d, gap, [](double g, double) { return kVacuumPermittivity / g; });
+  std::printf("member at 1 %% of its gap: capacitance error %.1e\n",
+              std::abs(electrode.Capacitance(d) / capacitance - 1.0));
+  EXPECT_NEAR(electrode.Capacitance(d), capacitance, 1e-9 * capacitance);
+
   constexpr double kAir = 1.81e-5;  // Pa s
   FrameSqueezeFilm film(model, SqueezeFilmOptions{kAir, 0.0}, gap);
   Eigen::VectorXd r = Eigen::VectorXd::Zero(d.size());
@@ -344,6 +356,14 @@ TEST(FrameGapIntegralTest, ATiltedPlateNearlyTouchingTakesItsClosedFormForce) {
     EXPECT_NEAR(turning, moment, 1e-7 * std::abs(moment));
     EXPECT_NEAR(r[along_x ? tx : tz], 0.0, 1e-12 * std::abs(turning / (f * l)));
     EXPECT_GT(std::abs(evaluate(coarse, d)[uy] / r[uy] - 1.0), 1e-2);
+    // The capacitance along the same level lines: eps0 side / s ln(high / low) (~3e-11: 1e-9
+    // asserted).
+    const FrameGapForce<ElectrostaticPressure> electrode(model, ElectrostaticPressure{1.0},
+                                                         FrameGapOptions{gap, {device.plate}});
+    const double capacitance = kVacuumPermittivity * side / s * std::log(high / low);
+    std::printf("plate tilted along %s: capacitance error %.1e\n", along_x ? "x" : "z",
+                std::abs(electrode.Capacitance(d) / capacitance - 1.0));
+    EXPECT_NEAR(electrode.Capacitance(d), capacitance, 1e-9 * capacitance);
   }
 
   // Along the diagonal: the gap's range split between x and z, F = sum over the corners of
@@ -454,6 +474,24 @@ TEST(FrameGapIntegralTest, AClosedOrNonFiniteGapIsAStatus) {
     EXPECT_TRUE(c.force->Evaluate(d, r, tangent)) << "dof " << c.dof;
     EXPECT_TRUE(r.allFinite());
   }
+}
+
+// A velocity is for the strips' points (the gas film's law): the plates' film is a law of their
+// own, and an integral over the plates refuses one rather than drop it.
+TEST(FrameGapIntegralTest, AVelocityReachesTheStripsAlone) {
+  const test::PlateOnFourBeams device;
+  const FrameModel model(device.structure);
+  const Eigen::VectorXd d = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const auto law = [](const FrameGapIntegral::Face&, double, double area, double vy) {
+    return std::pair{vy * area, 0.0};
+  };
+  ForceTangent tangent(model.FreeDofCount(), model.Stiffness().bandwidth());
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const FrameGapIntegral everything(model, FrameGapOptions{2e-6});
+  EXPECT_THROW(everything.Integrate(d, &d, law, r, tangent), std::invalid_argument);
+  FrameGapOptions strips{2e-6};
+  strips.plates = false;
+  EXPECT_TRUE(FrameGapIntegral(model, strips).Integrate(d, &d, law, r, tangent));
 }
 
 // With Casimir beside it the electrode pulls the plate in sooner: the fold of

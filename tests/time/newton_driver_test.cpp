@@ -320,6 +320,44 @@ TEST(NewtonDriverTest, ASolveEndsAtTheRoundingFloorAndKeepsItsFactor) {
   EXPECT_EQ(scheme.round_offs(), 2);
 }
 
+// The bound's ceiling decides only whether the bound is formed. Within it (FloorScheme's residual
+// stalls at half the bound, the ceiling twice the bound) the floor ends the solve as before; x^3 +
+// x = b, whose residual the tolerance ends, forms its bound at the first iterate past the
+// tolerance without a ceiling and never under a ceiling of 0, with the same iterates.
+TEST(NewtonDriverTest, TheRoundingBoundIsFormedOnlyWithinItsCeiling) {
+  struct Ceiled : FloorScheme {
+    using FloorScheme::FloorScheme;
+    double RoundOffCeiling() { return 2.0 * RoundOff(); }
+  };
+  NewtonDriver floor_driver;
+  Ceiled floor(1.0);
+  ASSERT_EQ(floor_driver.Solve(floor, 1.0), Status::kOk);
+  EXPECT_EQ(floor_driver.stats().evaluations, 2);
+
+  struct Counted : CubicScheme {
+    double ceiling = std::numeric_limits<double>::infinity();
+    int round_offs = 0;
+    double RoundOff() {
+      ++round_offs;
+      return 0.0;
+    }
+    double RoundOffCeiling() { return ceiling; }
+  };
+  NewtonDriver open_driver, shut_driver;
+  Counted open, shut;
+  shut.ceiling = 0.0;
+  for (const double b : {2.0, 3.0, 10.0}) {
+    open.SetLoad(b);
+    shut.SetLoad(b);
+    ASSERT_EQ(open_driver.Solve(open, 1.0), Status::kOk);
+    ASSERT_EQ(shut_driver.Solve(shut, 1.0), Status::kOk);
+    EXPECT_EQ(shut.x(), open.x()) << b;
+  }
+  EXPECT_EQ(shut_driver.stats().evaluations, open_driver.stats().evaluations);
+  EXPECT_GE(open.round_offs, 3);  // at least once a solve
+  EXPECT_EQ(shut.round_offs, 0);
+}
+
 // Without a bound (PlainNewtonScheme's 0) the floor ends nothing: the noise it drives keeps the
 // corrections above the increment test's, and the solve fails rather than stop at an unproven
 // state.

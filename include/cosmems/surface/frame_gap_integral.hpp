@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -29,10 +30,13 @@ namespace cosmems {
 /// midpoint) is at most FrameGapOptions::gap_ratio times its smallest; a plate's gap is linear,
 /// so its extremes are at its corners; where they differ by more than that ratio, it is integrated
 /// along its gap's level lines, the range of its gap halved as a strip's. Each interval gets the
-/// Gauss rule (a plate within the ratio the tensor rule, a level line the two-point rule).
-/// The force and tangent gather in c's four coefficients, face by face, and reach the
-/// structure's degrees of freedom through B once per face:
-///   r = sum over faces B sum_points phi p(g) A,   dr/dd = sum B (sum phi p'(g) phi^T A) B^T.
+/// Gauss rule (a plate within the ratio the tensor rule). The force and tangent gather in c's
+/// four coefficients, face by face, and reach the structure's degrees of freedom through B once
+/// per face:
+///   r = sum over faces B integral phi p(g) dA,   dr/dd = sum B (integral phi p'(g) phi^T dA) B^T.
+/// Where a face is halved, the points gather p and p' against polynomials alone (a strip's powers
+/// of xi, a level line's cubics of the gap), and phi enters once per strip or piece of the gap's
+/// range: the halving's points cost a few multiply-adds besides the pressure.
 /// The gap is held at the contact's separation from below, as on the beam. Allocates nothing.
 class FrameGapIntegral {
  public:
@@ -110,28 +114,23 @@ class FrameGapIntegral {
 
   /// Adds r(d) to `force` and its tangent to `tangent`, law(face, gap [m], area [m^2], v_y)
   /// giving the point's force along its motion toward +y and that force's derivative per
-  /// internal length unit of the motion, both in internal force units; v_y is the point's
-  /// velocity toward +y for the velocity `v` (internal units; 0 without one). False where a gap
-  /// closes or is not finite. The tangent is left out where !tangent.band_wanted().
+  /// internal length unit of the motion, both in internal force units and both proportional to
+  /// the area; v_y is the point's velocity toward +y for the velocity `v` (internal units; 0
+  /// without one). A velocity reaches the strips alone: throws std::invalid_argument for one
+  /// where the plates are integrated (a plate's film has its own law, FrameSqueezeFilm). False
+  /// where a gap closes or is not finite. The tangent is left out where !tangent.band_wanted().
   template <typename Law>
   bool Integrate(const Eigen::VectorXd& d, const Eigen::VectorXd* v, Law&& law,
                  Eigen::VectorXd& force, ForceTangent& tangent) const {
+    if (v && plates_) {
+      throw std::invalid_argument("FrameGapIntegral: a velocity needs plates = false");
+    }
     const bool band = tangent.band_wanted();
     for (const Face& face : faces_) {
       if (face.plate && !plates_) continue;
       Eigen::Vector4d f = Eigen::Vector4d::Zero();
       Eigen::Matrix4d t = Eigen::Matrix4d::Zero();
-      const Eigen::Vector4d cv = v ? Coefficients(face, *v) : Eigen::Vector4d::Zero();
-      const bool open = Visit(face, d, [&](const Eigen::Vector4d& phi, double gap, double area) {
-        const auto [value, slope] = law(face, gap, area, cv.dot(phi));
-        f += value * phi;
-        if (!band) return;
-        for (int a = 0; a < 4; ++a) {
-          const double sa = slope * phi[a];
-          for (int b = a; b < 4; ++b) t(a, b) += sa * phi[b];
-        }
-      });
-      if (!open) return false;
+      if (!Gather(face, d, v, law, band, f, t)) return false;
       for (int i = 0; i < face.count; ++i) force[face.dof[i]] += face.weights.row(i).dot(f);
       if (!band) continue;
       for (int a = 0; a < 4; ++a) {
@@ -148,31 +147,36 @@ class FrameGapIntegral {
   }
 
   /// Element e's share of the force law(face, gap [m], area [m^2]) gives along each point's
-  /// motion, in its local degrees of freedom.
+  /// motion (proportional to the area), in its local degrees of freedom.
   template <typename Law>
   FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e, Law&& law) const {
     FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
+    const auto with_slope = WithoutSlope(law);
     for (int k = first_face_[e]; k < first_face_[e + 1]; ++k) {
-      const Face& face = faces_[k];
       Eigen::Vector4d f = Eigen::Vector4d::Zero();
-      Visit(face, d, [&](const Eigen::Vector4d& phi, double gap, double area) {
-        f += law(face, gap, area) * phi;
-      });
-      out += face.local * f;
+      Eigen::Matrix4d t;
+      Gather(faces_[k], d, nullptr, with_slope, false, f, t);
+      out += faces_[k].local * f;
     }
     return out;
   }
 
-  /// The sum of value(face, gap [m], area [m^2]) over every point; NaN where a gap closes.
+  /// The integral over the faces of value(face, gap [m], area [m^2]), a density times the area;
+  /// NaN where a gap closes.
   template <typename Value>
   double Sum(const Eigen::VectorXd& d, Value&& value) const {
     double sum = 0.0;
+    const auto with_slope = WithoutSlope(value);
     for (const Face& face : faces_) {
       if (face.plate && !plates_) continue;
-      const bool open = Visit(face, d, [&](const Eigen::Vector4d&, double gap, double area) {
-        sum += value(face, gap, area);
-      });
-      if (!open) return std::numeric_limits<double>::quiet_NaN();
+      Eigen::Vector4d f = Eigen::Vector4d::Zero();
+      Eigen::Matrix4d t;
+      if (!Gather(face, d, nullptr, with_slope, false, f, t)) {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+      // The combination of the coefficients that is 1 all over the face: on a strip the Hermite
+      // shapes of the end values sum to 1, on a plate phi's first entry is 1.
+      sum += face.plate ? f[0] : f[0] + f[2];
     }
     return sum;
   }
@@ -230,16 +234,52 @@ class FrameGapIntegral {
     return {1.0, -z * per_length_m_, x * per_length_m_, 0.0};
   }
 
-  // Calls at(phi, gap [m], area [m^2]) at every quadrature point of the face for the state d;
-  // false where the gap closes or is not finite.
-  template <typename AtPoint>
-  bool Visit(const Face& face, const Eigen::VectorXd& d, AtPoint&& at) const {
-    const Eigen::Vector4d c = Coefficients(face, d);
-    return face.plate ? VisitPlate(face, c, at) : VisitStrip(face, c, at);
+  // A density value(face, gap, area) as a law (Integrate's) of no slope.
+  template <typename Value>
+  static auto WithoutSlope(Value& value) {
+    return [&value](const Face& face, double gap, double area, double /*vy*/) {
+      return std::pair{value(face, gap, area), 0.0};
+    };
   }
 
-  template <typename AtPoint>
-  bool VisitStrip(const Face& face, const Eigen::Vector4d& c, AtPoint& at) const {
+  // The face's integrals for the law (Integrate's) at the state d and velocity v (or none):
+  // f += integral of value phi and, where `band`, t's upper triangle += integral of
+  // slope phi phi^T. False where a gap closes or is not finite.
+  template <typename Law>
+  bool Gather(const Face& face, const Eigen::VectorXd& d, const Eigen::VectorXd* v, Law& law,
+              bool band, Eigen::Vector4d& f, Eigen::Matrix4d& t) const {
+    const Eigen::Vector4d c = Coefficients(face, d);
+    const Eigen::Vector4d cv = v ? Coefficients(face, *v) : Eigen::Vector4d::Zero();
+    const auto at = [&](const Eigen::Vector4d& phi, double gap, double area) {
+      const auto [value, slope] = law(face, gap, area, cv.dot(phi));
+      f += value * phi;
+      if (band) AddOuter(t, slope, phi);
+    };
+    if (!face.plate) return GatherStrip(face, c, cv, at, law, band, f, t);
+    const auto at_level = [&](double gap, double area) { return law(face, gap, area, 0.0); };
+    return GatherPlate(face, c, at, at_level, band, f, t);
+  }
+
+  // t's upper triangle += w phi phi^T.
+  static void AddOuter(Eigen::Matrix4d& t, double w, const Eigen::Vector4d& phi) {
+    for (int a = 0; a < 4; ++a) {
+      const double wa = w * phi[a];
+      for (int b = a; b < 4; ++b) t(a, b) += wa * phi[b];
+    }
+  }
+
+  // The cubic Lagrange polynomials of the nodes 0, 1/3, 2/3 and 1 at tau.
+  static std::array<double, 4> CubicLagrange(double tau) {
+    const double x = 3.0 * tau, x1 = x - 1.0, x2 = x - 2.0, x3 = x - 3.0;
+    return {-x1 * x2 * x3 / 6.0, 0.5 * x * x2 * x3, -0.5 * x * x1 * x3, x * x1 * x2 / 6.0};
+  }
+
+  // A strip's integrals (Gather's): at(phi, gap, area) at each point of the rule over all of it
+  // where its gap is within the ratio, law(face, gap, area, v_y) at each point of its halving
+  // where it is not; cv: the velocity's coefficients.
+  template <typename AtPoint, typename Law>
+  bool GatherStrip(const Face& face, const Eigen::Vector4d& c, const Eigen::Vector4d& cv,
+                   AtPoint& at, Law& law, bool band, Eigen::Vector4d& f, Eigen::Matrix4d& t) const {
     const FrameFaces::Strip& strip = geometry_.strips()[face.index];
     const double area_per_xi = strip.length_m * strip.width_m;
     // The whole strip first, on the shapes kept for it: most strips need no halving.
@@ -256,19 +296,60 @@ class FrameGapIntegral {
       }
       return true;
     }
-    // Halved from its two halves, whose gaps are known.
-    const auto gap_at = [&](double xi) { return Gap(face, c, StripPhi(xi)); };
+    // Halved from its two halves, whose gaps are known. phi = H^T (1, xi, xi^2, xi^3), so the
+    // gap and v_y are cubics of xi, and the points need only the pressure's integrals against
+    // the powers of xi: value up to xi^3 (f = H^T those), slope up to xi^6 (t = H^T M H, M the
+    // Hankel matrix of those).
+    Eigen::Vector4d gap = Eigen::Vector4d::Zero(), vy = Eigen::Vector4d::Zero();
+    for (int a = 0; a < 4; ++a) {
+      for (int j = 0; j < 4; ++j) {
+        gap[j] += kHermitePowers[a][j] * c[a] * length_m_;
+        vy[j] += kHermitePowers[a][j] * cv[a];
+      }
+    }
+    gap[0] += face.gap_m;
+    const auto cubic = [](const Eigen::Vector4d& a, double xi) {
+      return a[0] + xi * (a[1] + xi * (a[2] + xi * a[3]));
+    };
+    const auto gap_at = [&](double xi) { return AtLeastSeparation(cubic(gap, xi)); };
+    std::array<double, 4> value{};
+    std::array<double, 7> slope{};
     const auto point = [&](double xi, double weight) {
-      const Eigen::Vector4d phi = StripPhi(xi);
-      at(phi, Gap(face, c, phi), weight * area_per_xi);
+      const auto [p, dp] = law(face, gap_at(xi), weight * area_per_xi, cubic(vy, xi));
+      double power = 1.0;
+      for (int j = 0; j < 7; ++j) {
+        if (j < 4) value[j] += p * power;
+        if (band) slope[j] += dp * power;
+        power *= xi;
+      }
     };
     const double m = 0.5 * (strip.lo + strip.hi);
-    return Halving(strip.lo, m, g_lo, g_mid, gap_at, point) &&
-           Halving(m, strip.hi, g_mid, g_hi, gap_at, point);
+    if (!(Halving(strip.lo, m, g_lo, g_mid, gap_at, point) &&
+          Halving(m, strip.hi, g_mid, g_hi, gap_at, point))) {
+      return false;
+    }
+    for (int a = 0; a < 4; ++a) {
+      for (int j = 0; j < 4; ++j) f[a] += kHermitePowers[a][j] * value[j];
+    }
+    if (!band) return true;
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a; b < 4; ++b) {
+        for (int i = 0; i < 4; ++i) {
+          for (int j = 0; j < 4; ++j) {
+            t(a, b) += kHermitePowers[a][i] * kHermitePowers[b][j] * slope[i + j];
+          }
+        }
+      }
+    }
+    return true;
   }
 
-  template <typename AtPoint>
-  bool VisitPlate(const Face& face, const Eigen::Vector4d& c, AtPoint& at) const {
+  // A plate's integrals (Gather's): at(phi, gap, area) at each point of the tensor rule where its
+  // gap is within the ratio, at_level(gap, area) -> (value, slope) along its level lines where
+  // it is not.
+  template <typename AtPoint, typename AtLevel>
+  bool GatherPlate(const Face& face, const Eigen::Vector4d& c, AtPoint& at, AtLevel& at_level,
+                   bool band, Eigen::Vector4d& f, Eigen::Matrix4d& t) const {
     const FrameFaces::Plate& plate = geometry_.plates()[face.index];
     // The gap is linear, u = u_0 + s_x x + s_z z before the separation holds it, so its extremes
     // are at the corners.
@@ -295,35 +376,44 @@ class FrameGapIntegral {
       return true;
     }
     // Along the gap's level lines: the pressure is constant on each, so the plate is one integral
-    // over u, halved as a strip is, of the integrals along the level line of u's chord of the
-    // rectangle. phi is linear along a chord and the tangent's phi phi^T quadratic: for a
-    // pressure of the gap alone, two Gauss points on the chord are exact. Cells halved in x and z
-    // instead refine around the whole line where the plate nears the substrate: measured, a tilted
-    // shuttle 20 nm off it took ~120 cells of 16 points an evaluation. u is the level's coordinate
-    // along the side whose gap changes most (p, its slope k_p), the chord's along the other (q,
-    // k_q): p = (u - u_0 - k_q q) / k_p.
+    // over u, halved as a strip is, of the pressure times the integrals along the level line of
+    // u's chord of the rectangle, of phi (S(u)) and of phi phi^T (T(u)). Cells halved in x and z
+    // instead refine around the whole line where the plate nears the substrate: measured, a
+    // tilted shuttle 20 nm off it took ~120 cells of 16 points an evaluation. u is the level's
+    // coordinate along the side whose gap changes most (p, its slope k_p), the chord's along the
+    // other (q, k_q): p = (u - u_0 - k_q q) / k_p.
     const bool along_x = std::abs(slope_x) * (plate.x[1] - plate.x[0]) >=
                          std::abs(slope_z) * (plate.z[1] - plate.z[0]);
     const double k_p = along_x ? slope_x : slope_z, k_q = along_x ? slope_z : slope_x;
+    const double per_kp = 1.0 / k_p, per_kq = k_q != 0.0 ? 1.0 / k_q : 0.0;
     const std::array<double, 2>& p_side = along_x ? plate.x : plate.z;
     const std::array<double, 2>& q_side = along_x ? plate.z : plate.x;
-    auto at_level = [&](double u, double weight) {
-      // The chord: q within its side where p stays within its own.
+    // S(u) and T(u)'s upper triangle: phi is linear along a chord, and the two-point Gauss rule
+    // on it exact.
+    const auto chord = [&](double u, Eigen::Vector4d& s, Eigen::Matrix4d& m) {
+      s.setZero();
+      m.setZero();
       double q0 = q_side[0], q1 = q_side[1];
       if (k_q != 0.0) {
-        const double qa = (u - u0 - k_p * p_side[0]) / k_q, qb = (u - u0 - k_p * p_side[1]) / k_q;
+        const double qa = (u - u0 - k_p * p_side[0]) * per_kq;
+        const double qb = (u - u0 - k_p * p_side[1]) * per_kq;
         q0 = std::max(q0, std::min(qa, qb));
         q1 = std::min(q1, std::max(qa, qb));
       }
       if (!(q1 > q0)) return;
-      for (const double t : {0.5 - kChordPoint, 0.5 + kChordPoint}) {
-        const double q = q0 + t * (q1 - q0), p = (u - u0 - k_q * q) / k_p;
+      const double half = 0.5 * (q1 - q0);
+      for (const double at_q : {0.5 - kChordPoint, 0.5 + kChordPoint}) {
+        const double q = q0 + at_q * (q1 - q0), p = (u - u0 - k_q * q) * per_kp;
         const Eigen::Vector4d phi = along_x ? PlatePhi(p, q) : PlatePhi(q, p);
-        at(phi, Gap(face, c, phi), 0.5 * (q1 - q0) * weight);
+        s += half * phi;
+        AddOuter(m, half, phi);
       }
     };
     // Breaks where the chord's ends turn a corner and where the separation starts to hold the
-    // gap: between them the chord's moments are polynomials of u.
+    // gap. Between two, each end of the chord stays on one side: S is a quadratic of u and T a
+    // cubic, each the cubic through its values at four nodes of the piece. The pressure is then
+    // integrated against each node's Lagrange polynomial, and S and T are needed at the nodes
+    // alone, not at every point.
     std::array<double, 5> breaks{};
     std::copy(corners.begin(), corners.end(), breaks.begin());
     std::sort(breaks.begin(), breaks.begin() + 4);
@@ -332,10 +422,27 @@ class FrameGapIntegral {
     std::sort(breaks.begin(), breaks.begin() + count);
     const double per_u = 1.0 / std::abs(k_p);  // dA = du dq / |k_p|
     const auto gap_at = [&](double u) { return AtLeastSeparation(u); };
-    const auto point = [&](double u, double weight) { at_level(u, weight * per_u); };
+    Eigen::Vector4d s;
+    Eigen::Matrix4d m;
     for (int piece = 0; piece + 1 < count; ++piece) {
       const double a = breaks[piece], b = breaks[piece + 1];
-      if (b > a && !Halving(a, b, gap_at(a), gap_at(b), gap_at, point)) return false;
+      if (!(b > a)) continue;
+      std::array<double, 4> value{}, slope{};  // against each node's Lagrange polynomial
+      const double per_width = 1.0 / (b - a);
+      const auto point = [&](double u, double weight) {
+        const auto [p, dp] = at_level(gap_at(u), weight * per_u);
+        const std::array<double, 4> lagrange = CubicLagrange((u - a) * per_width);
+        for (int i = 0; i < 4; ++i) {
+          value[i] += p * lagrange[i];
+          if (band) slope[i] += dp * lagrange[i];
+        }
+      };
+      if (!Halving(a, b, gap_at(a), gap_at(b), gap_at, point)) return false;
+      for (int i = 0; i < 4; ++i) {
+        chord(i == 3 ? b : a + (b - a) * i / 3.0, s, m);
+        f += value[i] * s;
+        if (band) t += slope[i] * m;
+      }
     }
     return true;
   }
@@ -370,6 +477,9 @@ class FrameGapIntegral {
     return true;
   }
 
+  // The Hermite cubics' coefficients of the powers 1, xi, xi^2, xi^3 (HermiteShapes), a row each.
+  static constexpr std::array<std::array<double, 4>, 4> kHermitePowers = {
+      {{1.0, 0.0, -3.0, 2.0}, {0.0, 1.0, -2.0, 1.0}, {0.0, 0.0, 3.0, -2.0}, {0.0, 0.0, -1.0, 1.0}}};
   // The two-point Gauss rule's points on [0, 1] are 1/2 -+ this.
   static constexpr double kChordPoint = 0.28867513459481288225;  // 1 / (2 sqrt 3)
 

@@ -47,6 +47,7 @@ class PlainNewtonScheme {
   bool BackToStart() { return false; }
   bool Undo() { return false; }
   double RoundOff() { return 0.0; }
+  double RoundOffCeiling() { return std::numeric_limits<double>::infinity(); }
   Status SolveKept() { return Status::kNotConverged; }  // asked only for a NaN key: never
   double MassTerm() const { return 0.0; }
   bool Settle() { return true; }
@@ -66,8 +67,10 @@ class PlainNewtonScheme {
 ///   off), and Newton starts afresh. A fine mesh meets the rounding test above the tolerance:
 ///   its K d is a small difference of large products (SymmetricBandMatrix::ProductRoundOff). The
 ///   bound costs a product as large as the residual's, so it is formed once a solve, at the
-///   first iterate the tolerance does not end; the iterates after it differ from that one by
-///   corrections too small to change it.
+///   first iterate the tolerance does not end whose residual is within the scheme's ceiling of
+///   the bound (RoundOffCeiling, a norm of K times one of d: a landing's residuals, hundreds of
+///   tolerances, are far above it); the iterates after it differ from that one by corrections
+///   too small to change it.
 /// - The iterate outside a force's domain (a gap closed under a 1/gap^n pressure) is pulled back
 ///   along its last correction, halving it up to 10 times. The first iterate, the scheme's
 ///   prediction, is replaced by the state it predicted from (a step's start, inside the domain):
@@ -111,6 +114,8 @@ class PlainNewtonScheme {
 ///   bool Undo()                     the iterate back to where the last correction started;
 ///                                   false: none
 ///   double RoundOff()               the residual's rounding bound (0: no stall test)
+///   double RoundOffCeiling()        a bound at least RoundOff()'s, costing no pass over the
+///                                   matrix (infinity: none)
 ///   Status SolveKept()              the correction with the kept factor
 ///   NewtonFactor Factor(double shift)  factors the matrix (+ shift times the mass) and solves
 ///   double MassTerm()               the matrix's mass coefficient (0: nothing to raise)
@@ -239,8 +244,8 @@ class NewtonDriver {
       const double tolerance = options_.residual_tolerance * r.reference;
       bool at_floor = false;
       if (r.norm > tolerance && iteration > 0) {
-        if (round_off < 0.0) round_off = scheme.RoundOff();
-        at_floor = r.norm <= round_off;
+        if (round_off < 0.0 && r.norm <= scheme.RoundOffCeiling()) round_off = scheme.RoundOff();
+        at_floor = r.norm <= round_off;  // never while unformed (-1)
       }
       if ((r.norm <= tolerance || at_floor) && r.side_conditions_met) {
         if (at_floor) contraction_ = 0.0;

@@ -64,7 +64,9 @@ class NonlinearNewmarkIntegrator {
         newton_((ValidateNewtonOptions(options), options)),
         tangent_(mass.size(), mass.bandwidth()),
         jacobian_(mass.size(), mass.bandwidth()),
-        linear_(mass, stiffness, damping, parameters, time_step) {
+        linear_(mass, stiffness, damping, parameters, time_step),
+        round_off_ceiling_(2.0 * stiffness.ProductRoundOffFactor() *
+                           stiffness.AbsoluteRowSumMax()) {
     RequirePositive("time_step", time_step);
     if (p_.IsExplicit()) {
       throw std::invalid_argument(
@@ -284,9 +286,14 @@ class NonlinearNewmarkIntegrator {
 
   // The rounding error of the residual's stiffness product K (d_mid + dk v_mid) (100 elements at
   // 100 us steps stalled at 7e-9 of the reference, a sixteenth of this bound).
-  double RoundOff() {
-    if (damping_.stiffness != 0.0) return stiffness_.ProductRoundOff(elastic_, work_);
-    return stiffness_.ProductRoundOff(p_.alpha_f != 0.0 ? d_mid_ : d_new_, work_);
+  double RoundOff() { return stiffness_.ProductRoundOff(RoundOffState(), work_); }
+  // Twice the bound's ceiling (SymmetricBandMatrix::AbsoluteRowSumMax), so that neither's own
+  // rounding can put the bound above it.
+  double RoundOffCeiling() { return round_off_ceiling_ * RoundOffState().norm(); }
+  // The state K multiplies in the residual.
+  const Eigen::VectorXd& RoundOffState() const {
+    if (damping_.stiffness != 0.0) return elastic_;
+    return p_.alpha_f != 0.0 ? d_mid_ : d_new_;
   }
 
   // J delta = R with the kept band factor, the rank-one part of the tangent always fresh.
@@ -378,6 +385,7 @@ class NonlinearNewmarkIntegrator {
   bool idle_ = false;               ///< whether the force is idle at the accepted state
   bool streak_ = false;             ///< whether linear_ holds the state (d_, v_, a_ do not)
   const Eigen::VectorXd* f_target_ = nullptr;
+  double round_off_ceiling_;  ///< RoundOffCeiling() per unit of the state's norm
   Eigen::VectorXd d_, v_, a_, f_, d_new_, v_new_, a_new_, d_mid_, v_mid_, residual_, work_, r_,
       f_mid_, d_star_, v_star_, d_save_, v_save_, a_save_, r_start_, r_save_, scratch_, elastic_,
       d_before_;
