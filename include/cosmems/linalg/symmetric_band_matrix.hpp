@@ -72,18 +72,7 @@ class SymmetricBandMatrix {
   /// `work` (size()) is overwritten; allocates nothing.
   double ProductRoundOff(const Eigen::Ref<const Eigen::VectorXd>& x,
                          Eigen::Ref<Eigen::VectorXd> work) const {
-    work.setZero();
-    for (int j = 0; j < size_; ++j) {
-      const double xj = std::abs(x[j]);
-      double sum = std::abs(data_(0, j)) * xj;
-      const int last = std::min(size_ - 1, j + bandwidth_);
-      for (int i = j + 1; i <= last; ++i) {
-        const double a = std::abs(data_(i - j, j));
-        work[i] += a * xj;
-        sum += a * std::abs(x[i]);
-      }
-      work[j] += sum;
-    }
+    AbsoluteProduct(x, work);
     return ProductRoundOffFactor() * work.norm();
   }
   /// gamma_m of ProductRoundOff: its bound is this times || |A| |x| ||.
@@ -96,14 +85,8 @@ class SymmetricBandMatrix {
   /// 2-norm of a symmetric matrix is at most its infinity norm. Once this is known, that ceiling
   /// costs no pass over the band.
   double AbsoluteRowSumMax() const {
-    Eigen::VectorXd sums = Eigen::VectorXd::Zero(size_);
-    for (int j = 0; j < size_; ++j) {
-      sums[j] += std::abs(data_(0, j));
-      for (int i = j + 1; i <= std::min(size_ - 1, j + bandwidth_); ++i) {
-        sums[i] += std::abs(data_(i - j, j));
-        sums[j] += std::abs(data_(i - j, j));
-      }
-    }
+    Eigen::VectorXd sums(size_);
+    AbsoluteProduct(Eigen::VectorXd::Ones(size_), sums);
     return size_ > 0 ? sums.maxCoeff() : 0.0;
   }
 
@@ -141,6 +124,23 @@ class SymmetricBandMatrix {
   }
 
  private:
+  // out = |A| |x|.
+  void AbsoluteProduct(const Eigen::Ref<const Eigen::VectorXd>& x,
+                       Eigen::Ref<Eigen::VectorXd> out) const {
+    out.setZero();
+    for (int j = 0; j < size_; ++j) {
+      const double xj = std::abs(x[j]);
+      double sum = std::abs(data_(0, j)) * xj;
+      const int last = std::min(size_ - 1, j + bandwidth_);
+      for (int i = j + 1; i <= last; ++i) {
+        const double a = std::abs(data_(i - j, j));
+        out[i] += a * xj;
+        sum += a * std::abs(x[i]);
+      }
+      out[j] += sum;
+    }
+  }
+
   int size_ = 0;
   int bandwidth_ = 0;
   Eigen::MatrixXd data_;

@@ -151,11 +151,11 @@ class FrameGapIntegral {
   template <typename Law>
   FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e, Law&& law) const {
     FrameModel::ElementVector out = FrameModel::ElementVector::Zero();
-    const auto with_slope = WithoutSlope(law);
+    const auto as_law = WithoutSlope(law);
     for (int k = first_face_[e]; k < first_face_[e + 1]; ++k) {
       Eigen::Vector4d f = Eigen::Vector4d::Zero();
       Eigen::Matrix4d t;
-      Gather(faces_[k], d, nullptr, with_slope, false, f, t);
+      Gather(faces_[k], d, nullptr, as_law, false, f, t);
       out += faces_[k].local * f;
     }
     return out;
@@ -166,12 +166,12 @@ class FrameGapIntegral {
   template <typename Value>
   double Sum(const Eigen::VectorXd& d, Value&& value) const {
     double sum = 0.0;
-    const auto with_slope = WithoutSlope(value);
+    const auto as_law = WithoutSlope(value);
     for (const Face& face : faces_) {
       if (face.plate && !plates_) continue;
       Eigen::Vector4d f = Eigen::Vector4d::Zero();
       Eigen::Matrix4d t;
-      if (!Gather(face, d, nullptr, with_slope, false, f, t)) {
+      if (!Gather(face, d, nullptr, as_law, false, f, t)) {
         return std::numeric_limits<double>::quiet_NaN();
       }
       // The combination of the coefficients that is 1 all over the face: on a strip the Hermite
