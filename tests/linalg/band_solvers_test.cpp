@@ -120,6 +120,7 @@ TEST_P(BandSolverTest, SolvesLikeDenseCholesky) {
 INSTANTIATE_TEST_SUITE_P(Sizes, BandSolverTest,
                          ::testing::Values(std::make_tuple(1, 0), std::make_tuple(12, 5),
                                            std::make_tuple(60, 11), std::make_tuple(300, 11),
+                                           std::make_tuple(8, 11),    // a band past the size
                                            std::make_tuple(40, 7)));  // 7: the general loops
 
 // Two right-hand sides solved together give what one at a time gives.

@@ -44,8 +44,10 @@ TEST(ExactFrameFrequenciesTest, OneMemberHasTheClosedFormFrequencies) {
 // log2(e_h / e_(h/2)) of the four lowest modes' largest error (bench/modal_accuracy_report
 // prints the table): order 0 between 4 and 8 elements per member (measured 3.97 and 4.00),
 // order 1 between 2 and 4 (7.90, 8.02), order 2 between 1 and 2 (11.3, 11.8: one element is
-// not yet asymptotic; 12 +- 1 asserted), each well above the eigensolver's floor of about
-// 1e-12, which order 2 reaches at 8 elements (1.5e-13, 1.7e-13).
+// not yet asymptotic; 12 +- 1 asserted), each well above the eigensolver's floor, which order 2
+// reaches at 8 elements (measured 1.5e-13 to 1.2e-12, by the frame and the rounding of the band
+// factor's sums). That floor is the subspace iteration's stopping rule, eigenvalues changing by
+// less than 1e-12 of themselves in a sweep, which leaves them a few 1e-12 off: 5e-12 asserted.
 TEST(FrameConvergenceTest, FrequenciesConvergeAtTheSeriesRatesAcrossJunctions) {
   constexpr int kModes = 4;
   for (const test::ConvergenceFrame& frame : test::ConvergenceFrames()) {
@@ -63,7 +65,7 @@ TEST(FrameConvergenceTest, FrequenciesConvergeAtTheSeriesRatesAcrossJunctions) {
     EXPECT_NEAR(std::log2(error(4, 0) / error(8, 0)), 4.0, 0.15) << frame.name;
     EXPECT_NEAR(std::log2(error(2, 1) / error(4, 1)), 8.0, 0.4) << frame.name;
     EXPECT_NEAR(std::log2(error(1, 2) / error(2, 2)), 12.0, 1.0) << frame.name;
-    EXPECT_LT(error(8, 2), 1e-12) << frame.name;
+    EXPECT_LT(error(8, 2), 5e-12) << frame.name;
   }
 }
 

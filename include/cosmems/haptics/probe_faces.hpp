@@ -82,6 +82,13 @@ class ProbeFaces : public NonlinearForce {
     held_ = delta > 0.0 ? static_cast<int>(face) : kNoFace;
   }
 
+  /// Whether the sphere, where it is now, pushes at d while it pushed nowhere at the last
+  /// accepted step: it has just touched, and the structure's Newton matrix has gained the
+  /// spring's k w_f w_f^T.
+  bool Touches(const Eigen::VectorXd& d) const {
+    return held_ == kNoFace && reach_ && Pushing(d).second > 0.0;
+  }
+
   /// The face the probe presses on (or is nearest to) at d, and how deep.
   ProbeTouch Touch(const Eigen::VectorXd& d) const {
     ProbeTouch touch;

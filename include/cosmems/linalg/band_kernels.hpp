@@ -119,53 +119,50 @@ void BandLdlSolve(const double* __restrict unit, int stride, const double* __res
 /// inverse[j]. Returns n, or the first column j whose pivot is not above floor * A(j, j) (that
 /// pivot left in pivot[j]).
 ///
-/// Left-looking by columns, t_k = L(j, j-k) D_(j-k) formed once per column. Each column waits on
-/// 1 / D of the one before, so the recurrence is bound by that division's latency; unlike
-/// L L^T it takes no square root at all.
+/// Right-looking: column j, once its pivot is known, becomes L's column and takes its outer
+/// product out of the W columns after it, each update a contiguous run of one column (rows
+/// j + s ... j + W of column j + s), as the band is stored. Left-looking, each entry a dot
+/// product over the W columns before it reads them across their storage with a stride, and took
+/// 1.5 times as long (doc/speed.md, "Kernel choices"). A's column j + W enters the factor's
+/// storage as column j's updates first reach it; unlike L L^T no square root is taken.
 template <int W>
 int BandLdlFactor(const double* __restrict a, int stride, int n, double floor,
                   double* __restrict unit, double* __restrict pivot, double* __restrict inverse) {
+  const auto copy = [&](int c) {  // A's column c, its rows past the matrix's end zero
+    const double* from = a + static_cast<long>(c) * stride;
+    double* to = unit + static_cast<long>(c) * stride;
+    if (c + W < n) {
+      for (int k = 0; k <= W; ++k) to[k] = from[k];
+    } else {
+      for (int k = 0; k <= W; ++k) to[k] = c + k < n ? from[k] : 0.0;
+    }
+  };
+  for (int c = 0; c < W && c < n; ++c) copy(c);
   for (int j = 0; j < n; ++j) {
-    const double* column = a + static_cast<long>(j) * stride;
-    double* out = unit + static_cast<long>(j) * stride;
-    double t[W + 1] = {};
-    double d = column[0];
-    if (j >= W && j + W < n) {  // interior columns: every loop bound a constant, unrolled
-      for (int k = 1; k <= W; ++k) {
-        const double l = unit[static_cast<long>(j - k) * stride + k];
-        t[k] = l * pivot[j - k];
-        d -= l * t[k];
-      }
-      pivot[j] = d;
-      if (!(d > floor * column[0]) || !std::isfinite(d)) return j;
-      const double scale = inverse[j] = 1.0 / d;
-      out[0] = 1.0;
-      for (int r = 1; r <= W; ++r) {  // row j + r meets column j - k while k + r <= W
-        double s = column[r];
-        for (int k = 1; k + r <= W; ++k)
-          s -= unit[static_cast<long>(j - k) * stride + k + r] * t[k];
-        out[r] = s * scale;
-      }
-      continue;
-    }
-    const int previous = std::min(j, W);
-    for (int k = 1; k <= previous; ++k) {
-      const double l = unit[static_cast<long>(j - k) * stride + k];
-      t[k] = l * pivot[j - k];
-      d -= l * t[k];
-    }
+    if (j + W < n) copy(j + W);
+    double* column = unit + static_cast<long>(j) * stride;
+    const double d = column[0];
     pivot[j] = d;
-    if (!(d > floor * column[0]) || !std::isfinite(d)) return j;
+    if (!(d > floor * a[static_cast<long>(j) * stride]) || !std::isfinite(d)) return j;
     const double scale = inverse[j] = 1.0 / d;
-    out[0] = 1.0;
-    const int last = std::min(W, n - 1 - j);
-    for (int r = 1; r <= last; ++r) {
-      double s = column[r];
-      for (int k = 1; k <= previous && k + r <= W; ++k)
-        s -= unit[static_cast<long>(j - k) * stride + k + r] * t[k];
-      out[r] = s * scale;
+    double t[W + 1];  // t[r] = L(j + r, j) D_j: A(j + r, j) after the columns before updated it
+    for (int r = 1; r <= W; ++r) t[r] = column[r];
+    for (int r = 1; r <= W; ++r) column[r] = t[r] * scale;
+    column[0] = 1.0;
+    // A(j + r, j + s) -= L(j + s, j) D_j L(j + r, j); target[r] is row j + r of column j + s.
+    if (j + W < n) {  // interior columns: every loop bound a constant, unrolled
+      for (int s = 1; s <= W; ++s) {
+        double* target = unit + static_cast<long>(j + s) * stride - s;
+        const double l = column[s];  // read once: the stores to target could alias it
+        for (int r = s; r <= W; ++r) target[r] -= t[r] * l;
+      }
+    } else {
+      for (int s = 1; j + s < n; ++s) {
+        double* target = unit + static_cast<long>(j + s) * stride - s;
+        const double l = column[s];
+        for (int r = s; j + r < n; ++r) target[r] -= t[r] * l;
+      }
     }
-    for (int r = last + 1; r <= W; ++r) out[r] = 0.0;
   }
   return n;
 }

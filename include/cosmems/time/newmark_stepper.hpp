@@ -1,11 +1,14 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <type_traits>
 #include <utility>
 
 #include "cosmems/time/beam_stepper.hpp"
 
 namespace cosmems {
+
+class NonlinearNewmarkIntegrator;
 
 /// A Newmark-family integrator (LinearNewmarkIntegrator, NonlinearNewmarkIntegrator) as a
 /// BeamStepper: the load f = P s formed for it each step.
@@ -32,6 +35,10 @@ class NewmarkStepper final : public BeamStepper {
   const Eigen::VectorXd& displacement() const override { return integrator_.displacement(); }
   double time() const override { return integrator_.time(); }
   const NewtonStats& last_stats() const override { return integrator_.last_stats(); }
+  void ForgetFactor() override {
+    if constexpr (std::is_same_v<Integrator, NonlinearNewmarkIntegrator>)
+      integrator_.ForgetFactor();
+  }
 
   Integrator& integrator() { return integrator_; }
 

@@ -142,6 +142,8 @@ class NonlinearNewmarkIntegrator {
   double time() const { return time_; }
   /// What the last step cost (all its sub-steps).
   const NewtonStats& last_stats() const { return newton_.stats(); }
+  /// The next step factors afresh (BeamStepper::ForgetFactor).
+  void ForgetFactor() { newton_.ForgetFactor(); }
 
  private:
   friend class NewtonDriver;
