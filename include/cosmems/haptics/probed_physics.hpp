@@ -63,7 +63,7 @@ class ProbedPhysics : public HapticPhysics {
     // A factor kept from before the sphere touched lacks its spring, often stiffer than the
     // structure under it: the kept corrections then overshoot past the probe, where a fresh
     // matrix has no spring either (the pressed resonator's first touch: 4 evaluations and 2
-    // factorisations where factoring at once takes 1 and 1; doc/speed.md). Letting go needs
+    // factorisations where factoring at once takes 2 and 1; doc/speed.md). Letting go needs
     // nothing: the factor with the spring brings the structure back in a correction or two.
     if (probe_.Touches(displacement())) stepper_->ForgetFactor();
     Status status = Status::kOk;

@@ -35,7 +35,7 @@ class BeamStepper {
   /// What the last step cost (zero on the linear paths, which have no Newton).
   virtual const NewtonStats& last_stats() const = 0;
   /// Drops a Newton factor kept from earlier steps, where the caller knows the matrix has jumped
-  /// since (a probe's spring coming on or off). The paths that keep none ignore it.
+  /// since (a probe's spring coming on). The paths that keep none ignore it.
   virtual void ForgetFactor() {}
 };
 
