@@ -172,6 +172,33 @@ TEST(ProbeContactTest, PressedPastTheMidPlaneItPushesThroughTheFaceItCameIn) {
   EXPECT_NEAR(touch.depth_m, 0.5 * kReferenceThickness + 0.5e-6 + kProbeRadius, 1e-15);
 }
 
+// A prediction that carries the beam off the face the sphere held at the last accepted step
+// lets go (NonlinearForce::LetsGo); one that keeps it pressed, or a sphere the hand moved off the
+// face, or one that never touched, does not.
+TEST(ProbeContactTest, APredictionLetsGoOnlyOfTheFaceItHeld) {
+  const BeamModel<2> model = test::HapticCantilever();
+  ProbeContact<2> probe(model, ProbeOptions{kProbeRadius, kProbeCoupling});
+  const double unit = model.units().length;
+  const Eigen::VectorXd rest = Eigen::VectorXd::Zero(model.FreeDofCount());
+  const auto lowered = [&](double drop_m) {  // the beam moved down by drop_m under the sphere
+    Eigen::VectorXd d = rest;
+    for (std::size_t k = 0; k < model.NodeX().size(); ++k) {
+      const int r = model.dofs().Reduced(static_cast<int>(k), NodalDof::kUy);
+      if (r >= 0) d[r] = -drop_m / unit;
+    }
+    return d;
+  };
+  const double top = 0.5 * kReferenceThickness + kProbeRadius;  // the centre touching the top
+  const Eigen::Vector3d pressing(100e-6, top - 0.1e-6, 0.0);
+  probe.MoveTo(pressing);
+  EXPECT_FALSE(probe.LetsGo(rest, lowered(0.2e-6)));         // no face held yet
+  probe.Commit(rest);                                        // the upper face held from here
+  EXPECT_TRUE(probe.LetsGo(rest, lowered(0.2e-6)));          // predicted 0.1 um clear
+  EXPECT_FALSE(probe.LetsGo(rest, lowered(0.05e-6)));        // still 0.05 um pressed
+  probe.MoveTo(Eigen::Vector3d(100e-6, top + 0.1e-6, 0.0));  // the hand lifted off
+  EXPECT_FALSE(probe.LetsGo(rest, lowered(0.2e-6)));
+}
+
 // The force's depth max(delta, 0) along a path in 1 nm steps: no step moves it by more than the
 // largest slope of the overlaps where they are positive (sqrt(r^2 - h^2) at h <= sqrt(3) um,
 // slope sqrt(3)) times the step.

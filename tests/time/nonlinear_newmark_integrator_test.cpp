@@ -159,6 +159,39 @@ TEST(NonlinearNewmarkIntegratorTest, KeptFactorReachesPlainNewtonsStatesWithFewe
   EXPECT_LT(newton_iterations, 4.5 * steps);
 }
 
+// A force whose contact lets go of the prediction (NonlinearForce::LetsGo) has Newton start from
+// the step's start: the Duffing spring moving at its start is first evaluated there, not at
+// d_n + h v_n + ..., and the step ends where Newton from the prediction ends it (both to
+// Newton's tolerance, 1e-10 of the residual's terms: 1e-9 of the state between them).
+TEST(NonlinearNewmarkIntegratorTest, APredictionThatLetsGoStartsNewtonAtTheStepsStart) {
+  class Recording : public CubicSpring {
+   public:
+    explicit Recording(bool lets_go) : CubicSpring(0, 4.0), lets_go_(lets_go) {}
+    bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force,
+                  ForceTangent& tangent) override {
+      if (!std::isfinite(first)) first = d[0];
+      return CubicSpring::Evaluate(d, force, tangent);
+    }
+    void StartStep() override { first = std::nan(""); }
+    bool LetsGo(const Eigen::VectorXd&, const Eigen::VectorXd&) const override { return lets_go_; }
+    double first = std::nan("");  // the step's first evaluated state
+
+   private:
+    bool lets_go_;
+  };
+  const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(1.0);
+  const auto p = GeneralizedAlphaParameters::FromSpectralRadius(0.0);
+  Recording keeps(false), lets_go(true);
+  NonlinearNewmarkIntegrator predicted(m, k, {}, keeps, p, 0.1), started(m, k, {}, lets_go, p, 0.1);
+  for (NonlinearNewmarkIntegrator* integrator : {&predicted, &started}) {
+    ASSERT_EQ(integrator->Initialize(Vec(0.8), Vec(0.5), Vec(0.0)), Status::kOk);
+    ASSERT_EQ(integrator->Step(Vec(0.0)), Status::kOk);
+  }
+  EXPECT_EQ(lets_go.first, 0.8);
+  EXPECT_GT(keeps.first, 0.8 + 0.01);  // moved on by about h v = 0.05 less the deceleration
+  EXPECT_NEAR(started.displacement()[0], predicted.displacement()[0], 1e-9);
+}
+
 TEST(NonlinearNewmarkIntegratorTest, RefusesAReuseContractionOutsideZeroToOne) {
   const SymmetricBandMatrix m = Scalar(1.0), k = Scalar(1.0);
   CubicSpring spring(0, 4.0);

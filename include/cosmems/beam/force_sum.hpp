@@ -58,6 +58,12 @@ class ForceSum final : public NonlinearForce {
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     for (NonlinearForce* f : forces_) f->ProjectMotion(d, v, a);
   }
+  bool LetsGo(const Eigen::VectorXd& start, const Eigen::VectorXd& predicted) const override {
+    for (const NonlinearForce* f : forces_) {
+      if (f->LetsGo(start, predicted)) return true;
+    }
+    return false;
+  }
 
  private:
   std::vector<NonlinearForce*> forces_;

@@ -52,6 +52,10 @@ class ForceTuple final : public NonlinearForce {
   void ProjectMotion(const Eigen::VectorXd& d, Eigen::VectorXd& v, Eigen::VectorXd& a) override {
     std::apply([&](auto&... f) { (f.ProjectMotion(d, v, a), ...); }, forces_);
   }
+  bool LetsGo(const Eigen::VectorXd& start, const Eigen::VectorXd& predicted) const override {
+    return std::apply([&](const auto&... f) { return (f.LetsGo(start, predicted) || ...); },
+                      forces_);
+  }
 
   template <std::size_t I>
   auto& get() {

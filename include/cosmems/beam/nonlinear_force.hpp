@@ -115,6 +115,18 @@ class NonlinearForce {
   /// statics do not, nor does the modal path, whose forces are held over a step (with it, a step
   /// of the resonator's shuttle pressed onto the substrate failed). Allocates nothing.
   virtual void StartStep() {}
+  /// Whether a contact this force holds at `start`, a time step's start, lets go at
+  /// `predicted`, the integrator's extrapolation of the last step's motion to the step's end.
+  /// That motion is what the contact stopped: a structure the probe began to push moved into
+  /// the spring over the last step, and its velocity carries the prediction off it, where the
+  /// factor Newton keeps (formed with the spring) no longer fits the forces and a fresh one
+  /// (without it) overshoots back into the spring. NonlinearNewmarkIntegrator then starts Newton
+  /// from the step's start, where the contact holds. The default, never, keeps the prediction.
+  /// Allocates nothing.
+  virtual bool LetsGo(const Eigen::VectorXd& /*start*/,
+                      const Eigen::VectorXd& /*predicted*/) const {
+    return false;
+  }
   /// A time step ended at d with velocity v and acceleration a: a constraint removes the motion
   /// it forbids (a node driven onto the substrate stops there: an inelastic impact). Allocates
   /// nothing.

@@ -82,6 +82,16 @@ class ProbeFaces : public NonlinearForce {
     held_ = delta > 0.0 ? static_cast<int>(face) : kNoFace;
   }
 
+  /// Whether the face held since the last accepted step, pushed at `start` by the sphere where
+  /// it is now, is clear of it at `predicted` (NonlinearForce::LetsGo). A sphere the hand moved
+  /// off the face pushes nowhere at `start`: that release is the hand's, and the prediction
+  /// stays.
+  bool LetsGo(const Eigen::VectorXd& start, const Eigen::VectorXd& predicted) const override {
+    if (held_ == kNoFace || !reach_) return false;
+    const Face& face = faces_[static_cast<std::size_t>(held_)];
+    return Overlap(face, start) > 0.0 && !(Overlap(face, predicted) > 0.0);
+  }
+
   /// Whether the sphere, where it is now, pushes at d while it pushed nowhere at the last
   /// accepted step: it has just touched, and the structure's Newton matrix has gained the
   /// spring's k w_f w_f^T.

@@ -44,6 +44,9 @@ namespace cosmems {
 ///   the modes above what the step resolves reverse their acceleration every step, and the full
 ///   Taylor term would leave the first corrections useless, while resolved motion keeps its
 ///   accuracy.
+/// - Where the prediction lets go of a contact that holds the step's start (a probe the structure
+///   began to press into over the last step: NonlinearForce::LetsGo), Newton starts from the
+///   step's start instead.
 /// - The band part of the tangent's factor is kept while it keeps working (the tangent barely
 ///   moves near a step's solution and from one step to the next), and only the rank-one part is
 ///   renewed each iteration, solved together with the system.
@@ -194,8 +197,10 @@ class NonlinearNewmarkIntegrator {
     cm_ = (1.0 - am) * ca_ + (1.0 - af) * gamma / (beta * h) * damping_.mass;
     ck_ = (1.0 - af) * (1.0 + gamma / (beta * h) * damping_.stiffness);
     ct_ = 1.0 - af;
-    // Predictor d_(n+1) = d_n + h v_n + persistence h^2/2 a_n (see the class comment).
+    // Predictor d_(n+1) = d_n + h v_n + persistence h^2/2 a_n (see the class comment), or the
+    // step's start where it would carry the structure off a contact holding it there.
     d_new_ = d_ + h * v_ + (persistence_ * 0.5 * h * h) * a_;
+    if (force_.LetsGo(d_, d_new_)) d_new_ = d_;
     a_new_ = ca_ * (d_new_ - d_star_);
     // The factor serves the sub-steps of one length: the key is h.
     return newton_.Solve(*this, h);
