@@ -3,19 +3,21 @@
 #include <array>
 #include <charconv>
 
-#include "cli_input_error.hpp"
-
 namespace cosmems::internal {
 
-CsvFile::CsvFile(const std::filesystem::path& path, const std::string& header)
-    : path_(path), file_(path) {
-  Check();
-  file_ << header << '\n';
+CsvFile::CsvFile(const std::filesystem::path& path, const std::string& header) : file_(path) {
+  file_.Write(header);
+  file_.Write("\n");
 }
 
 void CsvFile::Row(const std::vector<std::string>& cells) {
-  for (std::size_t i = 0; i < cells.size(); ++i) file_ << (i == 0 ? "" : ",") << cells[i];
-  file_ << '\n';
+  line_.clear();
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i > 0) line_ += ',';
+    line_ += cells[i];
+  }
+  line_ += '\n';
+  file_.Write(line_);
 }
 
 void CsvFile::Rows(const Eigen::MatrixXd& values, const std::string& first_cell) {
@@ -27,10 +29,7 @@ void CsvFile::Rows(const Eigen::MatrixXd& values, const std::string& first_cell)
   }
 }
 
-void CsvFile::Close() {
-  file_.close();
-  Check();
-}
+void CsvFile::Close() { file_.Commit(); }
 
 std::string CsvFile::Number(double value) {
   std::array<char, 32> buffer{};
@@ -46,12 +45,6 @@ std::string CsvFile::Number(double value, int significant_digits) {
       std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0,
                     std::chars_format::general, significant_digits);
   return {buffer.data(), end.ptr};
-}
-
-void CsvFile::Check() {
-  if (!file_) {
-    throw CliInputError("--out: " + path_.string() + ": cannot write the file");
-  }
 }
 
 }  // namespace cosmems::internal

@@ -2,14 +2,16 @@
 
 #include <Eigen/Core>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
+#include "atomic_file.hpp"
+
 namespace cosmems::internal {
 
-/// A CSV file with a header row, written row by row. Throws CliInputError naming the file when
-/// it cannot be opened or written.
+/// A CSV file with a header row, written row by row. It appears whole at Close() or not at all
+/// (AtomicFile: a symbolic link in its place is replaced, not followed). Throws OutputFileError
+/// naming the file and the system's reason when it cannot be written.
 class CsvFile {
  public:
   CsvFile(const std::filesystem::path& path, const std::string& header);
@@ -18,7 +20,7 @@ class CsvFile {
   void Row(const std::vector<std::string>& cells);
   /// One row per row of `values`, each number exact (Number()), after `first_cell` if given.
   void Rows(const Eigen::MatrixXd& values, const std::string& first_cell = "");
-  /// Flushes and checks that everything reached the file.
+  /// Writes the file to the disk under its name.
   void Close();
 
   /// A number in the shortest form that reads back exactly (0.0002, 1.5e-07).
@@ -27,10 +29,8 @@ class CsvFile {
   static std::string Number(double value, int significant_digits);
 
  private:
-  void Check();
-
-  std::filesystem::path path_;
-  std::ofstream file_;
+  AtomicFile file_;
+  std::string line_;  ///< the row being joined, kept to reuse its memory
 };
 
 }  // namespace cosmems::internal

@@ -28,6 +28,9 @@ MpiWorld::MpiWorld() {
   if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
     throw std::runtime_error("MPI_Init_thread failed");
   }
+  // A rank that dies ends the job (mpirun exits non-zero) instead of leaving rank 0 waiting for
+  // its row: said here rather than left to the implementation's default.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
@@ -82,7 +85,13 @@ void MpiWorld::Serve(const std::function<std::string(std::int64_t)>& run) const 
     MPI_Status status;
     MPI_Recv(&index, 1, MPI_INT64_T, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
     if (status.MPI_TAG == kStop) return;
-    row = run(index);
+    try {
+      row = run(index);
+    } catch (...) {
+      // `run` makes a failing sample a row; what escapes it anyway (no memory left for the
+      // row's text) must not finalise this rank while rank 0 waits for the row for ever.
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
   }
 }
 

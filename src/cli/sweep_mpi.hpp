@@ -36,6 +36,8 @@ class MpiWorld {
   void Dispatch(const std::vector<std::int64_t>& todo,
                 const std::function<void(const std::string&)>& sink) const;
   /// The other ranks: the text of `run(index)` for each index rank 0 sends, until it stops them.
+  /// An exception out of `run` aborts the job (mpirun exits non-zero): rank 0 would wait for
+  /// the row for ever. A resume finishes the sweep.
   void Serve(const std::function<std::string(std::int64_t)>& run) const;
 
  private:

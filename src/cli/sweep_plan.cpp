@@ -67,8 +67,10 @@ SweepPlan::SweepPlan(std::vector<SweepParameter> parameters, SweepMethod method,
   for (std::size_t j = 0; j < parameters_.size(); ++j) {
     if (parameters_[j].IsGrid()) {
       grid_points_ *= static_cast<std::int64_t>(parameters_[j].values().size());
-      if (grid_points_ > (std::int64_t{1} << 40))
-        throw CliInputError("--vary: the grid has more than 2^40 points");
+      if (grid_points_ > kMaxSweepSamples) {
+        throw CliInputError("--vary " + parameters_[j].key() + ": the grid has more than " +
+                            std::to_string(kMaxSweepSamples) + " points, the limit of a sweep");
+      }
     } else {
       random_.push_back(static_cast<int>(j));
     }
@@ -76,9 +78,13 @@ SweepPlan::SweepPlan(std::vector<SweepParameter> parameters, SweepMethod method,
   if (random_.empty()) draws_ = 1;
   if (draws_ < 1)
     throw CliInputError("--samples = " + std::to_string(draws) + ": must be at least 1");
-  if (draws_ > (std::int64_t{1} << 40) || grid_points_ * draws_ > (std::int64_t{1} << 53) / 2) {
-    throw CliInputError("--samples = " + std::to_string(draws) +
-                        ": the sweep would exceed 2^52 samples");
+  // Before the strata below, whose size is the draws'. Both factors are at most the limit, so
+  // their product cannot overflow.
+  if (draws_ > kMaxSweepSamples || grid_points_ * draws_ > kMaxSweepSamples) {
+    throw CliInputError("--samples = " + std::to_string(draws) + ": the sweep would have " +
+                        (grid_points_ > 1 ? std::to_string(grid_points_) + " grid points x " : "") +
+                        std::to_string(draws) + " samples, above the limit of " +
+                        std::to_string(kMaxSweepSamples));
   }
   const int dimensions = static_cast<int>(random_.size());
   if (method_ == SweepMethod::kLatinHypercube) {

@@ -11,6 +11,11 @@
 
 namespace cosmems::internal {
 
+/// The most samples a sweep may have (grid points x draws): ten times the largest yield study
+/// doc/sweeps.md plans for (10^6). Rank 0 keeps every row in memory for the summary, a few
+/// kilobytes each.
+constexpr std::int64_t kMaxSweepSamples = 10'000'000;
+
 /// How a sweep draws its random parameters.
 enum class SweepMethod { kMonteCarlo, kLatinHypercube, kSobol };
 /// "monte-carlo", "lhs", "sobol"
@@ -32,7 +37,8 @@ SweepMethod ParseSweepMethod(const std::string& name, const std::string& option)
 class SweepPlan {
  public:
   /// Throws CliInputError for draws below 1, a Sobol sweep of more random parameters than the
-  /// sequence has dimensions, or more samples than 2^53.
+  /// sequence has dimensions, or more samples than kMaxSweepSamples (checked before anything
+  /// of the samples' size is allocated).
   SweepPlan(std::vector<SweepParameter> parameters, SweepMethod method, std::int64_t draws,
             std::uint64_t seed);
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <optional>
+#include <sstream>
 
-#include "cli_input_error.hpp"
+#include "atomic_file.hpp"
 #include "csv_file.hpp"
 #include "sweep_outputs.hpp"
 
@@ -94,7 +94,7 @@ std::vector<std::filesystem::path> WriteSweepPlots(const std::filesystem::path& 
     const std::string stem = "plot_" + Stem(field);
     const std::filesystem::path data = directory / (stem + ".dat");
     {
-      std::ofstream out(data);
+      std::ostringstream out;
       double previous = points.front().keys.empty() ? 0.0 : points.front().keys.front();
       for (const Point& p : points) {
         // A map's scans (one value of the first key each) are separated by a blank line.
@@ -103,13 +103,14 @@ std::vector<std::filesystem::path> WriteSweepPlots(const std::filesystem::path& 
         for (const double k : p.keys) out << CsvFile::Number(k) << " ";
         out << CsvFile::Number(p.value) << "\n";
       }
-      if (!out)
-        throw CliInputError("--out " + directory.string() + ": cannot write " + data.string());
+      AtomicFile::WriteWhole(data, out.str());
     }
-    std::ofstream gp(directory / (stem + ".gp"));
-    // SI values span many decades: three digits and slanted ticks keep them apart.
+    std::ostringstream gp;
+    // SI values span many decades: three digits and slanted ticks keep them apart. `png` names
+    // the image unless the command line set it (the sweep draws into a temporary, below).
     gp << "set terminal pngcairo size 800,560 noenhanced\n"
-       << "set output " << Quoted(stem + ".png") << "\n"
+       << "if (!exists(\"png\")) png = " << Quoted(stem + ".png") << "\n"
+       << "set output png\n"
        << "set grid\nset format x '%.3g'\nset format y '%.3g'\nset xtics rotate by 30 right\n"
        << "set lmargin 12\nset bmargin 5\n";
     std::string bounds;
@@ -153,11 +154,16 @@ std::vector<std::filesystem::path> WriteSweepPlots(const std::filesystem::path& 
          << "set cblabel " << Quoted(field) << "\nset view map\n"
          << "splot " << Quoted(data.filename().string()) << " using 1:2:3 with pm3d notitle\n";
     }
-    gp.close();
-    if (!gp) throw CliInputError("--out " + directory.string() + ": cannot write " + stem + ".gp");
-    if (gnuplot && std::system(("cd " + ShellWord(directory.string()) + " && gnuplot " +
-                                ShellWord(stem + ".gp") + " 2>/dev/null")
-                                   .c_str()) == 0) {
+    AtomicFile::WriteWhole(directory / (stem + ".gp"), gp.str());
+    if (!gnuplot) continue;
+    // gnuplot writes wherever `set output` says, through a symbolic link too: it draws into a
+    // temporary of our making, which replaces the image once whole.
+    AtomicFile png(directory / (stem + ".png"));
+    const std::string set_png = "png = " + Quoted(png.temporary().filename().string());
+    if (std::system(("cd " + ShellWord(directory.string()) + " && gnuplot -e " +
+                     ShellWord(set_png) + " " + ShellWord(stem + ".gp") + " 2>/dev/null")
+                        .c_str()) == 0) {
+      png.Commit();
       written.push_back(directory / (stem + ".png"));
     }
   }

@@ -27,7 +27,8 @@ std::vector<std::string> DefaultPlotFields(const std::vector<SweepRow>& rows,
 /// Writes, for each field, `plot_FIELD.dat` (the samples that ran), `plot_FIELD.gp` (the
 /// gnuplot script) and, when gnuplot is on the PATH, `plot_FIELD.png` drawn by it; FIELD with
 /// its brackets as underscores. Returns the PNG files written. A sweep of neither one or two
-/// numeric grid keys nor drawn keys (three grid keys, a grid of strings) has no plot.
+/// numeric grid keys nor drawn keys (three grid keys, a grid of strings) has no plot. Each file
+/// appears whole or not at all (AtomicFile); OutputFileError when one cannot be written.
 std::vector<std::filesystem::path> WriteSweepPlots(const std::filesystem::path& directory,
                                                    const std::vector<SweepRow>& rows,
                                                    const SweepPlotRequest& request);

@@ -4,14 +4,15 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
-#include <fstream>
 #include <functional>
 #include <mutex>
+#include <new>
 #include <optional>
 #include <set>
 #include <thread>
 
 #include "analysis_runner.hpp"
+#include "atomic_file.hpp"
 #include "cli_input_error.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "sweep_condition.hpp"
@@ -23,6 +24,7 @@
 #include "sweep_mpi.hpp"
 #endif
 #include "text_format.hpp"
+#include "text_hash.hpp"
 
 namespace cosmems::internal {
 namespace {
@@ -73,20 +75,45 @@ std::vector<SceneOverride> Overrides(const Sweep& sweep,
   return overrides;
 }
 
+// A haptic scene on a real device cannot be a sweep's sample: there is one device and one hand,
+// and samples run at once (threads, ranks). Throws naming device.backend.
+void RequireNoDevice(const Scene& scene) {
+  if (scene.analysis.type != AnalysisType::kHaptic || !scene.device ||
+      scene.device->backend != DeviceBackend::kOpenHaptics) {
+    return;
+  }
+  throw CliInputError(
+      "device.backend = \"openhaptics\": a sweep cannot run a haptic scene on a device (one "
+      "device, one hand, and the samples run at once); sweep the scripted stylus instead");
+}
+
+// A paced haptic scene measures the machine's real-time behaviour: its samples run one at a time.
+bool PacedHaptic(const Scene& scene) {
+  return scene.analysis.type == AnalysisType::kHaptic && scene.device && scene.device->realtime;
+}
+
 // Every grid value, and each distribution's median, must make a valid scene (the others at
-// their nominal values): an invalid sweep is refused before a sample runs.
-void Validate(const Sweep& sweep) {
+// their nominal values): an invalid sweep is refused before a sample runs. Returns whether any
+// of those scenes is a paced haptic one.
+bool Validate(const Sweep& sweep) {
   const std::vector<SweepParameter>& parameters = sweep.plan.parameters();
   std::vector<nlohmann::json> nominal;
   for (const SweepParameter& p : parameters) nominal.push_back(p.Nominal());
-  (void)LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, nominal));
+  bool paced = false;
+  auto check = [&](const std::vector<nlohmann::json>& values) {
+    const Scene scene = LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, values));
+    RequireNoDevice(scene);
+    paced = paced || PacedHaptic(scene);
+  };
+  check(nominal);
   for (std::size_t j = 0; j < parameters.size(); ++j) {
     std::vector<nlohmann::json> values = nominal;
     for (std::size_t v = 1; v < parameters[j].values().size(); ++v) {
       values[j] = parameters[j].values()[v];
-      (void)LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, values));
+      check(values);
     }
   }
+  return paced;
 }
 
 SweepRow RunSample(const Sweep& sweep, std::int64_t index) {
@@ -98,24 +125,37 @@ SweepRow RunSample(const Sweep& sweep, std::int64_t index) {
   }
   try {
     const Scene scene = LoadSceneText(sweep.text, sweep.scene, Overrides(sweep, values));
+    RequireNoDevice(scene);  // a combination of values Validate() did not load
     row.result = RunAnalysis(scene)->Json();
     row.status = row.result.value("status", std::string("no status"));
   } catch (const std::invalid_argument& error) {  // a drawn value the scene refuses
     row.status = std::string("invalid: ") + error.what();
+  } catch (const std::bad_alloc&) {  // this sample's model too large for the memory left
+    row.status = "error: out of memory";
+  } catch (const std::exception& error) {
+    // Whatever else one sample meets is its row: the other samples, the other threads and,
+    // under MPI, rank 0 waiting for this row go on.
+    row.status = std::string("error: ") + error.what();
+  } catch (...) {
+    row.status = "error: an exception of unknown type";
   }
   return row;
 }
 
-// What sweep.json records: what decides the samples' values (not threads, shards or output).
+// What sweep.json records: what decides the samples' values and results (not threads, shards
+// or output): the scene's text by its hash (an edited file is another design), the --set as
+// given and the program's version.
 nlohmann::ordered_json Description(const Sweep& sweep, const SweepRequest& request) {
   nlohmann::ordered_json vary = nlohmann::ordered_json::object();
   for (const SweepParameter& p : sweep.plan.parameters()) vary[p.key()] = p.spec();
   return {{"scene", request.scene},
+          {"scene_text_hash", TextHash(sweep.text)},
           {"set", request.sets},
           {"vary", vary},
           {"method", ToString(sweep.plan.method())},
           {"samples", sweep.plan.draws()},
-          {"seed", sweep.plan.seed()}};
+          {"seed", sweep.plan.seed()},
+          {"version", COSMEMS_VERSION}};
 }
 
 // Runs `todo` on `workers` threads, each taking the next index as it finishes one (samples near
@@ -132,7 +172,7 @@ void RunOnThreads(const Sweep& sweep, const std::vector<std::int64_t>& todo, int
         SweepRow row = RunSample(sweep, todo[i]);
         const std::lock_guard<std::mutex> hold(lock);
         sink(std::move(row));
-      } catch (...) {  // out of memory, an unwritable file: the sweep stops
+      } catch (...) {  // an unwritable --out (a sample's own failure is its row): the sweep stops
         const std::lock_guard<std::mutex> hold(lock);
         if (!failure) failure = std::current_exception();
         next = todo.size();
@@ -197,10 +237,15 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
   const auto start = std::chrono::steady_clock::now();
   request.MergeSceneTable(text, request.scene);
   const Sweep sweep = Prepare(request, std::move(text));
-  Validate(sweep);
+  const bool paced = Validate(sweep);
+  if (paced && ranks && ranks->workers > 1) {
+    throw CliInputError(
+        "device.realtime = true: a paced haptic sweep runs one sample at a time (its timings are "
+        "the machine's); run it on threads, not on MPI ranks");
+  }
 
   std::optional<SweepStore> store;
-  if (!request.out.empty()) store.emplace(request.out, Description(sweep, request));
+  if (!request.out.empty()) store.emplace(request.out, Description(sweep, request), err);
   std::vector<SweepRow> rows = store ? store->previous() : std::vector<SweepRow>{};
   std::set<std::int64_t> done;
   for (const SweepRow& row : rows) done.insert(row.index);
@@ -209,10 +254,11 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
     if (done.count(i) == 0) todo.push_back(i);
   }
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int workers = ranks ? ranks->workers
-                            : static_cast<int>(std::clamp<std::int64_t>(
-                                  request.threads > 0 ? request.threads : hardware, 1,
-                                  std::max<std::size_t>(todo.size(), 1)));
+  const int workers = ranks   ? ranks->workers
+                      : paced ? 1
+                              : static_cast<int>(std::clamp<std::int64_t>(
+                                    request.threads > 0 ? request.threads : hardware, 1,
+                                    std::max<std::size_t>(todo.size(), 1)));
 
   std::size_t finished = 0, failed = 0;
   auto sink = [&](SweepRow row) {
@@ -240,9 +286,7 @@ int Run(SweepRequest request, std::string text, std::ostream& out, std::ostream&
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   summary["workers"] = workers;
   if (store) {
-    std::ofstream file(store->directory() / "summary.json");
-    file << summary.dump(2) << "\n";
-    if (!file) throw CliInputError("--out " + request.out + ": cannot write summary.json");
+    AtomicFile::WriteWhole(store->directory() / "summary.json", summary.dump(2) + "\n");
     WriteSweepCsv(store->directory() / "samples.csv", rows);
     (void)WriteSweepPlots(store->directory(), rows, PlotRequest(sweep, request, rows));
   }
@@ -296,9 +340,8 @@ int RunOnRanks(const SweepRequest& request, std::ostream& out, std::ostream& err
   } catch (const std::exception&) {
     // Rank 0 fails alike, reports it and hands out no sample.
   }
-  world.Serve([&](std::int64_t index) {
-    return sweep ? RunSample(*sweep, index).Json().dump() : std::string();
-  });
+  world.Serve(
+      [&](std::int64_t index) { return sweep ? RunSample(*sweep, index).Text() : std::string(); });
   return 0;
 }
 #endif

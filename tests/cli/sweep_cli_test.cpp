@@ -2,6 +2,7 @@
 // workers and shards, resume, refusal before any sample, and failures as rows.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -46,6 +47,42 @@ std::map<std::int64_t, Json> Rows(const std::filesystem::path& directory) {
     EXPECT_TRUE(rows.emplace(index, row).second) << "index " << index << " twice";
   }
   return rows;
+}
+
+// The built binary started with `args` (stdout to /dev/null, stderr to `err` when given), under
+// each resource limit of `limits` (RLIMIT_FSIZE: a write past it fails as on a full disk).
+pid_t Spawn(const std::vector<std::string>& args, const std::filesystem::path& err = {},
+            const std::vector<std::pair<int, rlim_t>>& limits = {}) {
+  const pid_t child = fork();
+  if (child != 0) return child;
+  std::vector<char*> argv;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  freopen("/dev/null", "w", stdout);
+  if (!err.empty()) freopen(err.c_str(), "w", stderr);
+  signal(SIGXFSZ, SIG_IGN);  // a write past RLIMIT_FSIZE fails with EFBIG, not a signal
+  for (const auto& [resource, bound] : limits) {
+    const rlimit limit{bound, bound};
+    setrlimit(resource, &limit);
+  }
+  execv(argv[0], argv.data());
+  _exit(127);
+}
+
+// The exit status of a child, -1 when a signal ended it.
+int ExitStatus(pid_t child) {
+  int status = 0;
+  waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Every file of a folder and its text: what a refused command must leave as it was.
+std::map<std::string, std::string> Snapshot(const std::filesystem::path& directory) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    files[entry.path().filename().string()] = TextOf(entry.path());
+  }
+  return files;
 }
 
 Json Sweep(std::vector<std::string> args) {
@@ -253,6 +290,199 @@ TEST(SweepCliTest, AKilledSweepResumesWithoutRedoingOrDuplicatingRows) {
       "holds another sweep");
 }
 
+// Shards started together into one folder (the documented workflow for job arrays): every
+// line of samples.jsonl is one whole row, every index is there once, and the sweep run there
+// afterwards finds nothing to run. 200 folded-flexure rows of a few kilobytes each, written by
+// four processes at once.
+TEST(SweepCliTest, ConcurrentShardsIntoOneFolderKeepEveryRowWhole) {
+  const TempDirectory dir;
+  const std::string out = dir.path().string();
+  const std::vector<std::string> sweep = {"folded-flexure", "--vary",
+                                          "structure.beam_length=80e-6:120e-6:200", "--out", out};
+  constexpr int kShards = 4, kSamples = 200;
+  std::vector<pid_t> shards;
+  for (int k = 1; k <= kShards; ++k) {
+    std::vector<std::string> args = {COSMEMS_BINARY, "sweep"};
+    args.insert(args.end(), sweep.begin(), sweep.end());
+    args.insert(args.end(), {"--threads", "1", "--shard", std::to_string(k) + "/4"});
+    shards.push_back(Spawn(args, dir.path() / ("err" + std::to_string(k) + ".txt")));
+  }
+  for (int k = 0; k < kShards; ++k) {
+    EXPECT_EQ(ExitStatus(shards[k]), 0)
+        << TextOf(dir.path() / ("err" + std::to_string(k + 1) + ".txt"));
+  }
+  std::map<std::int64_t, int> seen;
+  const std::vector<std::string> lines = ReadLines(dir.path() / "samples.jsonl");
+  for (const std::string& line : lines) {
+    const Json row = Json::parse(line, nullptr, false);
+    ASSERT_FALSE(row.is_discarded()) << "not a row: " << line.substr(0, 200);
+    ++seen[row["index"].get<std::int64_t>()];
+  }
+  EXPECT_EQ(seen.size(), static_cast<std::size_t>(kSamples));
+  for (const auto& [index, count] : seen) EXPECT_EQ(count, 1) << "index " << index;
+  EXPECT_EQ(Sweep(sweep)["samples"], kSamples);
+  EXPECT_EQ(ReadLines(dir.path() / "samples.jsonl").size(), lines.size());
+}
+
+// A line that is not a row (two rows joined by an older cosmems, a hand's edit) is skipped with
+// a warning naming it, and the samples it held run again.
+TEST(SweepCliTest, ACorruptLineIsSkippedWithAWarningAndItsSampleRunsAgain) {
+  const TempDirectory dir;
+  const std::vector<std::string> sweep = {
+      "sweep", "cantilever",        "--vary", "structure.length=100e-6:300e-6:5",
+      "--out", dir.path().string(), "--json"};
+  ASSERT_EQ(Cli(sweep).code, 0);
+  std::vector<std::string> lines = ReadLines(dir.path() / "samples.jsonl");
+  ASSERT_EQ(lines.size(), 5u);
+  const std::int64_t lost = Json::parse(lines[1])["index"], joined = Json::parse(lines[2])["index"];
+  lines[1] = lines[1].substr(0, lines[1].size() / 2) + lines[2];
+  lines.erase(lines.begin() + 2);
+  std::string text;
+  for (const std::string& line : lines) text += line + "\n";
+  WriteFile(dir.path() / "samples.jsonl", text);
+
+  const CliOutcome resumed = Cli(sweep);
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  ExpectContains(resumed.err, "samples.jsonl line 2 is not a sample row");
+  EXPECT_EQ(Json::parse(resumed.out)["samples"], 5);
+  std::set<std::int64_t> indices;
+  for (const std::string& line : ReadLines(dir.path() / "samples.jsonl")) {
+    const Json row = Json::parse(line, nullptr, false);
+    if (!row.is_discarded()) indices.insert(row["index"].get<std::int64_t>());
+  }
+  EXPECT_EQ(indices, (std::set<std::int64_t>{0, 1, 2, 3, 4})) << lost << " " << joined;
+}
+
+// sweep.json records the scene's text (by its hash) and the program's version: a resume after
+// the scene was edited, or by another version, is refused naming what changed, and the folder
+// is left as it was.
+TEST(SweepCliTest, AResumeAfterTheSceneOrTheVersionChangedIsRefused) {
+  const TempDirectory dir("_scene"), out("_out");
+  const std::filesystem::path scene = dir.path() / "beam.toml";
+  const std::string text = Cli({"show", "cantilever"}).out;
+  const std::size_t modulus = text.find("young_modulus = 169e9");
+  ASSERT_NE(modulus, std::string::npos);
+  WriteFile(scene, text);
+  const std::vector<std::string> sweep = {"sweep",  scene.string(),
+                                          "--vary", "structure.length=100e-6:300e-6:3",
+                                          "--out",  out.path().string()};
+  ASSERT_EQ(Cli(sweep).code, 0);
+  std::map<std::string, std::string> before = Snapshot(out.path());
+
+  std::string edited = text;
+  edited.replace(modulus, std::string("young_modulus = 169e9").size(), "young_modulus = 160e9");
+  WriteFile(scene, edited);
+  ExpectContains(InvalidInput(sweep), "scene_text_hash (the scene's text)");
+  EXPECT_TRUE(Snapshot(out.path()) == before);
+
+  WriteFile(scene, text);
+  Json recorded = Json::parse(TextOf(out.path() / "sweep.json"));
+  EXPECT_EQ(recorded["version"], COSMEMS_VERSION);
+  recorded["version"] = "0.0.1";
+  WriteFile(out.path() / "sweep.json", recorded.dump(2) + "\n");
+  before = Snapshot(out.path());
+  ExpectContains(InvalidInput(sweep), "version: \"0.0.1\" there, \"" COSMEMS_VERSION "\" now");
+  EXPECT_TRUE(Snapshot(out.path()) == before);
+}
+
+// sweep.json, summary.json, samples.csv, the plots and run's --out files replace a symbolic
+// link in their place instead of writing through it; samples.jsonl, appended to, refuses one.
+TEST(SweepCliTest, OutputsNeverWriteThroughASymbolicLink) {
+  const TempDirectory dir;
+  const std::filesystem::path precious = dir.path() / "precious.txt";
+  WriteFile(precious, "precious\n");
+  const std::filesystem::path sweep = dir.path() / "sweep", run = dir.path() / "run",
+                              appended = dir.path() / "appended";
+  for (const auto& folder : {sweep, run, appended}) std::filesystem::create_directories(folder);
+  for (const char* name : {"summary.json", "samples.csv", "plot_max_deflection.dat",
+                           "plot_max_deflection.gp", "plot_max_deflection.png"}) {
+    std::filesystem::create_symlink(precious, sweep / name);
+  }
+  std::filesystem::create_symlink(precious, run / "deflection.csv");
+  std::filesystem::create_symlink(precious, appended / "samples.jsonl");
+
+  Sweep({"cantilever", "--vary", "structure.length=100e-6:300e-6:3", "--out", sweep.string()});
+  ASSERT_EQ(Cli({"run", "cantilever", "--out", run.string()}).code, 0);
+  EXPECT_EQ(TextOf(precious), "precious\n");
+  for (const std::filesystem::path& file :
+       {sweep / "summary.json", sweep / "samples.csv", sweep / "plot_max_deflection.png",
+        run / "deflection.csv"}) {
+    EXPECT_FALSE(std::filesystem::is_symlink(file)) << file;
+    EXPECT_TRUE(std::filesystem::is_regular_file(file)) << file;
+  }
+  EXPECT_EQ(Json::parse(TextOf(sweep / "summary.json"))["samples"], 3);
+  EXPECT_EQ(ReadLines(run / "deflection.csv").size(), 22u);  // the header, 21 nodes
+  EXPECT_EQ(ReadLines(sweep / "samples.csv").size(), 4u);
+
+  const CliOutcome refused = Cli({"sweep", "cantilever", "--vary",
+                                  "structure.length=100e-6:300e-6:3", "--out", appended.string()});
+  EXPECT_EQ(refused.code, 1);
+  ExpectContains(refused.err, (appended / "samples.jsonl").string() + ": a symbolic link");
+  EXPECT_EQ(TextOf(precious), "precious\n");
+}
+
+// A write that fails (here past a limit on file sizes, as on a full disk) is exit status 1
+// naming the file and the system's reason, not "invalid input"; the file that was there before
+// is left whole and no temporary remains.
+TEST(SweepCliTest, AFailedWriteIsExitOneNamingTheFileAndTheReason) {
+  const TempDirectory dir;
+  const std::filesystem::path run = dir.path() / "run", sweep = dir.path() / "sweep";
+  ASSERT_EQ(Cli({"run", "cantilever", "--out", run.string()}).code, 0);
+  const std::map<std::string, std::string> before = Snapshot(run);
+  const std::filesystem::path err = dir.path() / "err.txt";
+  // 2001 rows of seven numbers: far past 16 kB.
+  EXPECT_EQ(ExitStatus(Spawn({COSMEMS_BINARY, "run", "cantilever", "--set", "model.elements=2000",
+                              "--out", run.string()},
+                             err, {{RLIMIT_FSIZE, 16384}})),
+            1);
+  ExpectContains(TextOf(err), (run / "deflection.csv").string() + ": cannot write: File too large");
+  EXPECT_TRUE(Snapshot(run) == before);
+  // The sweep's rows: a few kilobytes each, the fifth past the limit.
+  EXPECT_EQ(ExitStatus(Spawn({COSMEMS_BINARY, "sweep", "folded-flexure", "--vary",
+                              "structure.beam_length=80e-6:120e-6:20", "--out", sweep.string()},
+                             err, {{RLIMIT_FSIZE, 16384}})),
+            1);
+  ExpectContains(TextOf(err),
+                 (sweep / "samples.jsonl").string() + ": cannot write: File too large");
+}
+
+// A sample that throws (here out of memory: a 100000-element 3-D modal analysis in 500 MB of
+// address space) is a row with its error, and the sweep goes on to its end: it used to stop the
+// whole sweep (exit 1, "out of memory"). The sanitizers reserve terabytes of address space.
+TEST(SweepCliTest, ASampleThatThrowsIsARowWithItsError) {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "an address-space limit and a sanitizer's shadow memory do not mix";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+  GTEST_SKIP() << "an address-space limit and a sanitizer's shadow memory do not mix";
+#endif
+#endif
+  const TempDirectory dir;
+  const std::filesystem::path out = dir.path() / "out", err = dir.path() / "err.txt";
+  ASSERT_EQ(ExitStatus(Spawn({COSMEMS_BINARY, "sweep", "cantilever", "--vary",
+                              "model.elements=[20, 100000]", "--set", "model.dimension=3", "--set",
+                              "analysis.type=modal", "--threads", "2", "--out", out.string()},
+                             err, {{RLIMIT_AS, rlim_t{500} << 20}})),
+            0)
+      << TextOf(err);
+  const std::map<std::int64_t, Json> rows = Rows(out);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows.at(0)["status"], "ok");
+  EXPECT_EQ(rows.at(1)["status"], "error: out of memory");
+  EXPECT_TRUE(rows.at(1)["result"].is_null());
+  EXPECT_EQ(Json::parse(TextOf(out / "summary.json"))["failed"], 1);
+}
+
+// The number of samples is bounded before anything of their size is allocated (an LHS sweep's
+// strata): exit 2 naming --samples and the limit.
+TEST(SweepCliTest, TheNumberOfSamplesIsBounded) {
+  ExpectContains(
+      InvalidInput({"sweep", "cantilever", "--vary", "structure.length=uniform:1e-4:2e-4",
+                    "--samples", "1000000000000", "--method", "lhs"}),
+      "--samples = 1000000000000: the sweep would have 1000000000000 samples, above "
+      "the limit of 10000000");
+}
+
 TEST(SweepCliTest, AnInvalidSweepIsRefusedBeforeAnySampleRuns) {
   const TempDirectory dir;
   ExpectContains(InvalidInput({"sweep", "cantilever", "--vary", "structure.lenght=1e-4:2e-4:3",
@@ -303,6 +533,23 @@ TEST(SweepCliTest, ASampleTheSceneRefusesIsARowAndTheSweepGoesOn) {
   EXPECT_EQ(summary["samples"], 20);
 }
 
+// A scene file whose name is not UTF-8 (Latin-1 names on an old cluster): each result names
+// it, and a row that cannot be written as JSON used to throw and stop the whole sweep. Its rows
+// are written, the name's stray byte as U+FFFD.
+TEST(SweepCliTest, ASceneNameThatIsNotUtf8StopsNoSample) {
+  const TempDirectory dir("_scene"), out("_out");
+  const std::filesystem::path scene = dir.path() / "beam-\xe9.toml";
+  WriteFile(scene, Cli({"show", "cantilever"}).out);
+  const CliOutcome outcome =
+      Cli({"sweep", scene.string(), "--vary", "structure.length=100e-6:300e-6:3", "--threads", "2",
+           "--out", out.path().string(), "--json"});
+  ASSERT_EQ(outcome.code, 0) << outcome.err;
+  EXPECT_EQ(Json::parse(outcome.out)["failed"], 0);
+  const std::map<std::int64_t, Json> rows = Rows(out.path());
+  ASSERT_EQ(rows.size(), 3u);
+  ExpectContains(rows.at(0)["result"]["scene"].get<std::string>(), "beam-\xef\xbf\xbd.toml");
+}
+
 // On a terminal a progress line counts the samples as they finish, each overwriting the last.
 TEST(SweepCliTest, DrawsAProgressLine) {
   internal::SweepRequest request;
@@ -343,11 +590,12 @@ TEST(SweepCliTest, ASceneCarriesItsSweep) {
 // mpirun with 3 ranks (rank 0 dispatching to two) gives the threaded run's rows; an invalid
 // sweep fails on every rank with the exit status 2 and names its key. OpenMPI refuses root and
 // more ranks than cores unless told (the CI machine: root, 2 cores).
-int Mpirun(const std::string& args, const std::filesystem::path& err) {
+int Mpirun(const std::string& args, const std::filesystem::path& err,
+           const std::string& prefix = "") {
   setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
   setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
   setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
-  const std::string command = std::string(COSMEMS_MPIEXEC) + " -n 3 " + COSMEMS_BINARY + " sweep " +
+  const std::string command = prefix + COSMEMS_MPIEXEC + " -n 3 " + COSMEMS_BINARY + " sweep " +
                               args + " > /dev/null 2> " + err.string();
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -370,7 +618,93 @@ TEST(SweepCliTest, MpiRanksGiveTheThreadedRows) {
   EXPECT_EQ(Mpirun("cantilever --vary structure.lenght=1e-4:2e-4:3", err), 2);
   ExpectContains(TextOf(err), "structure.lenght");
 }
+
+// A rank that dies (killed here once three rows are written) ends the job: mpirun exits
+// non-zero instead of rank 0 waiting for the dead rank's row, and the resume finishes the sweep.
+// The deadline only keeps a hang from blocking the suite.
+TEST(SweepCliTest, ADeadRankEndsTheJobAndTheResumeFinishes) {
+  const TempDirectory dir;
+  const std::string out = (dir.path() / "out").string();
+  const std::string sweep =
+      "cantilever-modal --vary model.elements=1000:1990:100 --threads 1 --out " + out;
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  setenv("OMPI_MCA_rmaps_base_oversubscribe", "1", 1);
+  const pid_t mpirun = Spawn(
+      {"/bin/sh", "-c",
+       std::string("exec ") + COSMEMS_MPIEXEC + " -n 3 " + COSMEMS_BINARY + " sweep " + sweep},
+      dir.path() / "err.txt");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  while (ReadLines(dir.path() / "out" / "samples.jsonl").size() < 3 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  // mpirun's children are the ranks: the last one started goes.
+  std::ifstream children("/proc/" + std::to_string(mpirun) + "/task/" + std::to_string(mpirun) +
+                         "/children");
+  pid_t rank = 0;
+  for (pid_t child; children >> child;) rank = child;
+  ASSERT_GT(rank, 0) << TextOf(dir.path() / "err.txt");
+  kill(rank, SIGKILL);
+  int status = 0;
+  bool ended = false;
+  while (!ended && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ended = waitpid(mpirun, &status, WNOHANG) == mpirun;
+  }
+  if (!ended) {
+    kill(mpirun, SIGKILL);
+    waitpid(mpirun, &status, 0);
+  }
+  ASSERT_TRUE(ended) << "mpirun still waited after a rank died";
+  EXPECT_FALSE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  const Json summary =
+      Sweep({"cantilever-modal", "--vary", "model.elements=1000:1990:100", "--out", out});
+  EXPECT_EQ(summary["samples"], 100);
+  EXPECT_EQ(Rows(dir.path() / "out").size(), 100u);
+}
+
+// A worker's sample whose row could not be written as JSON (the scene's name not UTF-8) threw
+// out of the worker, which left MPI while rank 0 waited for its row for ever: `timeout` turns
+// such a hang into a failure (status 124, or 137 when mpirun ignores the TERM). Now the rows
+// come back and the sweep ends, with --out too (whose sweep.json names the scene).
+TEST(SweepCliTest, AWorkerWhoseSampleThrowsDoesNotHangTheRanks) {
+  const TempDirectory dir;
+  const std::filesystem::path scene = dir.path() / "beam-\xe9.toml";
+  WriteFile(scene, Cli({"show", "cantilever"}).out);
+  const std::filesystem::path err = dir.path() / "err.txt", out = dir.path() / "out";
+  const std::string sweep = "'" + scene.string() + "' --vary structure.length=100e-6:300e-6:4";
+  const std::string guard = "timeout -k 10 300 ";
+  ASSERT_EQ(Mpirun(sweep + " --json", err, guard), 0) << TextOf(err);
+  ASSERT_EQ(Mpirun(sweep + " --out " + out.string(), err, guard), 0) << TextOf(err);
+  EXPECT_EQ(Rows(out).size(), 4u);
+  // The resume reads the name back as it was written.
+  ASSERT_EQ(Mpirun(sweep + " --out " + out.string(), err, guard), 0) << TextOf(err);
+}
 #endif
+
+// One device, one hand: a haptic scene on the OpenHaptics device is refused as a sweep (exit 2
+// naming device.backend), before a sample runs; a paced one runs its samples one at a time
+// whatever the threads asked, so that each measures the machine alone.
+TEST(SweepCliTest, AHapticSweepNeverSharesADeviceAndRunsPacedSamplesOneAtATime) {
+  const std::string refused =
+      InvalidInput({"sweep", "cantilever-haptic", "--set", "device.backend=\"openhaptics\"",
+                    "--vary", "structure.length=150e-6:200e-6:2", "--threads", "2"});
+  ExpectContains(refused, "device.backend = \"openhaptics\"");
+
+  const TempDirectory dir;
+  const std::filesystem::path script = dir.path() / "short.csv";
+  WriteFile(script, "time_s,x_m,y_m,z_m\n0.0,0.0,0.0,0.0\n0.03,0.0,-0.0001,0.0\n");
+  const Json paced =
+      Sweep({"cantilever-haptic", "--set", "device.trajectory=\"" + script.string() + "\"",
+             "--vary", "structure.length=150e-6:200e-6:2", "--threads", "2"});
+  EXPECT_EQ(paced["samples"], 2);
+  EXPECT_EQ(paced["workers"], 1);
+  const Json fast = Sweep(
+      {"cantilever-haptic", "--set", "device.trajectory=\"" + script.string() + "\"", "--set",
+       "device.realtime=false", "--vary", "structure.length=150e-6:200e-6:2", "--threads", "2"});
+  EXPECT_EQ(fast["workers"], 2);
+}
 
 }  // namespace sweep_cli_test
 }  // namespace cosmems::testing

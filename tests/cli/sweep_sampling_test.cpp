@@ -138,6 +138,28 @@ TEST(SweepPlanTest, ASampleDependsOnItsIndexAlone) {
   }
 }
 
+// A sweep has at most kMaxSweepSamples samples, refused before anything of their number is
+// allocated: a grid of 10^12 points names the key that took it past the limit.
+TEST(SweepPlanTest, TheNumberOfSamplesIsBounded) {
+  const SweepParameter a("a", "0:1:1000000"), b("b", "0:1:1000000");
+  try {
+    (void)SweepPlan({a, b}, SweepMethod::kMonteCarlo, 1, 1);
+    ADD_FAILURE() << "a grid of 10^12 points was accepted";
+  } catch (const CliInputError& error) {
+    EXPECT_NE(std::string(error.what()).find("--vary b: the grid has more than 10000000 points"),
+              std::string::npos)
+        << error.what();
+  }
+  // At the limit itself the plan is made.
+  EXPECT_EQ(SweepPlan({SweepParameter("a", "0:1:10000"), SweepParameter("b", "0:1:1000")},
+                      SweepMethod::kMonteCarlo, 1, 1)
+                .Count(),
+            10000000);
+  EXPECT_THROW(
+      SweepPlan({SweepParameter("a", "normal:0:1")}, SweepMethod::kLatinHypercube, 10000001, 1),
+      CliInputError);
+}
+
 // Each stratum of [0, 1) along each key holds exactly one of the draws.
 TEST(SweepPlanTest, LatinHypercubeAndSobolDrawsAreStratified) {
   const int n = 256;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -18,5 +19,8 @@ struct ScriptedSample {
 /// out), with enough digits to read back every double exactly, so a recording replays as a CSV
 /// trajectory. Throws std::runtime_error naming the file when it cannot be written.
 void WriteSamplesCsv(const std::string& path, const std::vector<ScriptedSample>& samples);
+/// The same CSV text on `out`, for a caller that writes the file its own way (whole or not at
+/// all).
+void WriteSamplesCsv(std::ostream& out, const std::vector<ScriptedSample>& samples);
 
 }  // namespace cosmems
