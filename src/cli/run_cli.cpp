@@ -14,8 +14,10 @@
 #include "cli_input_error.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/netlist_scene.hpp"
+#include "cosmems/scene/printable_text.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
+#include "output_file_error.hpp"
 #include "sweep_runner.hpp"
 
 namespace cosmems {
@@ -33,13 +35,6 @@ struct RunRequest {
   bool json = false;
   std::string out;
 };
-
-std::string OneLine(std::string text) {
-  for (char& c : text) {
-    if (c == '\n' || c == '\r') c = ' ';
-  }
-  return text;
-}
 
 // An option given once per value, any number of times (--set A=1 --set B=2): one value each,
 // so that the positional SCENE may follow it.
@@ -210,8 +205,8 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
       commands += (commands.empty() ? "" : ", ") + command->get_name();
     }
     if (!known) {
-      err << "cosmems: unknown command \"" << OneLine(args.front()) << "\" (expected " << commands
-          << ")\n";
+      err << "cosmems: unknown command \"" << PrintableText(args.front()) << "\" (expected "
+          << commands << ")\n";
       return kInvalidInput;
     }
   }
@@ -223,7 +218,7 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   } catch (const CLI::Success& help_or_version) {
     return app.exit(help_or_version, out, err);
   } catch (const CLI::ParseError& error) {
-    err << "cosmems: " << OneLine(error.what()) << " (see cosmems --help)\n";
+    err << "cosmems: " << PrintableText(error.what()) << " (see cosmems --help)\n";
     return kInvalidInput;
   }
 
@@ -245,13 +240,16 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
     return Run(request, out);
   } catch (const std::invalid_argument& error) {  // SceneError, CliInputError, core checks
-    err << "cosmems: " << OneLine(error.what()) << "\n";
+    err << "cosmems: " << PrintableText(error.what()) << "\n";
     return kInvalidInput;
+  } catch (const internal::OutputFileError& error) {  // a full disk: the system, not the input
+    err << "cosmems: " << PrintableText(error.what()) << "\n";
+    return kInternalError;
   } catch (const std::bad_alloc&) {
     err << "cosmems: out of memory\n";
     return kInternalError;
   } catch (const std::exception& error) {
-    err << "cosmems: internal error: " << OneLine(error.what()) << "\n";
+    err << "cosmems: internal error: " << PrintableText(error.what()) << "\n";
     return kInternalError;
   }
 }

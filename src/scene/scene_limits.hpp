@@ -1,7 +1,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
+#include "cosmems/structure/frame_size.hpp"
 #include "toml_field_reader.hpp"
 
 namespace cosmems::internal {
@@ -64,6 +66,31 @@ constexpr Bounds kStiffness{1e-12, 1e12, "N/m"};
 // beam (the power-series elements converge with a handful).
 constexpr int kMaxElements = 100000;
 constexpr int kMaxSeriesOrder = 6;
+// A device's model as a whole: its members' elements add up (a parametric device multiplies
+// model.elements by its members, a netlist may list any number), and a netlist's band grows with
+// its width, so both are bounded on the netlist (FrameSizeOf) before the model is built. 500,000
+// elements (about 3 million unknowns) is 500 times the folded flexure of the benchmarks (1000
+// elements, 5970 unknowns, 20 MB), 62,500 a beam of its eight.
+constexpr std::int64_t kMaxDeviceElements = 500000;
+// The peak memory of a run, estimated from the model's size: kBandMatrices matrices of its band
+// (K and the mass terms, the analyses' effective matrices, factors and tangents) and
+// kElementBytes for each element (its matrices, transforms and forces). It lies above the
+// measured peaks of every analysis (static, modal at series order 6, buckling, transient and
+// haptic, linear and stretching) of the folded flexure at 10,000 and 50,000 elements and of a
+// 40 x 40 grid of members (84,240 unknowns, band 236): the largest, 23 KB an element, is the
+// stretching haptic run of the folded flexure (26 KB estimated); a linear model's band is half
+// the bound, and its peak about half the estimate.
+constexpr double kBandMatrices = 12.0;
+constexpr double kElementBytes = 12288.0;
+inline double DeviceBytes(const FrameSize& size) {
+  const double band =
+      8.0 * static_cast<double>(size.unknowns) * static_cast<double>(size.bandwidth + 1);
+  return kBandMatrices * band + kElementBytes * static_cast<double>(size.elements);
+}
+// A workstation's memory: a run that would take more is refused rather than left to exhaust it.
+// The same everywhere, so that a scene valid on one machine (one shard of a sweep) is valid on
+// all.
+constexpr double kMaxDeviceBytes = 16e9;
 // A serpentine spring's spans: real ones have a few to a few tens; each adds two members.
 constexpr int kMaxTurns = 100;
 // A comb drive's movable fingers: real ones have tens to a few hundred.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cosmems/scene/frame_conversion.hpp"
+#include "device_checks.hpp"
 #include "key_reader.hpp"
 #include "scene_keys.hpp"
 #include "scene_limits.hpp"
@@ -453,6 +454,9 @@ void CheckDevice(const TomlFieldReader& r, const Scene& scene) {
   } catch (const FieldError& error) {
     r.Fail(error.field(), error.reason());
   }
+  CheckDeviceSize(r, scene, structure);
+  // The generators hold what they make; a netlist holds what its supports hold.
+  if (scene.structure.kind == StructureKind::kFrame) CheckFrameSupports(r, structure);
   for (std::size_t i = 0; i < scene.loads.points.size(); ++i) {
     const ScenePointLoad& p = scene.loads.points[i];
     const std::string entry = "loads.points[" + std::to_string(i) + "]";

@@ -49,6 +49,10 @@ void TomlFieldReader::Fail(const std::string& key, const toml::node& value,
   throw SceneError(origins_.SourceOf(key), key, FormatToml(value), reason);
 }
 
+void TomlFieldReader::FailWithoutValue(const std::string& key, const std::string& reason) const {
+  throw SceneError(origins_.SourceOf(key), key, "", reason);
+}
+
 void TomlFieldReader::FailMissing(const std::string& key) const {
   throw SceneError(origins_.SourceOf(key), key, "", "missing required key");
 }

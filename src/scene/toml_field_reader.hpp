@@ -37,6 +37,8 @@ class TomlFieldReader {
   /// The same with the value given.
   [[noreturn]] void Fail(const std::string& key, const toml::node& value,
                          const std::string& reason) const;
+  /// Throws "SOURCE: KEY: REASON", leaving out the value: for a key that holds a whole netlist.
+  [[noreturn]] void FailWithoutValue(const std::string& key, const std::string& reason) const;
   /// Throws Fail(key, reason) unless `condition`.
   void Require(bool condition, const std::string& key, const std::string& reason) const {
     if (!condition) Fail(key, reason);

@@ -245,5 +245,79 @@ TEST(DeviceCliTest, SharedKeysAreListedOnceAndUnknownKeysListTheKindsOwn) {
                  "structure.kind = \"serpentine\" or \"torsional_micromirror\": ");
 }
 
+// A frame of side x side nodes 50 um apart in the substrate plane, a member between each pair of
+// neighbours, the first row clamped and the far corner pulled down: however it is numbered its
+// band grows with its side.
+std::string Grid(int side) {
+  std::ostringstream text;
+  text << "[structure]\nkind = \"frame\"\nthickness = 2e-6\n\n[material]\n"
+          "young_modulus = 160e9\ndensity = 2330.0\n\n[analysis]\ntype = \"static\"\n\n"
+          "[[loads.points]]\nnode = \"n"
+       << side - 1 << "_" << side - 1 << "\"\nforce = [0.0, -1e-6, 0.0]\n";
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      text << "\n[[structure.nodes]]\nname = \"n" << i << "_" << j << "\"\nposition = ["
+           << i * 50e-6 << ", 0.0, " << j * 50e-6 << "]\n"
+           << (i == 0 ? "support = \"clamped\"\n" : "");
+    }
+  }
+  for (int i = 0; i < side; ++i) {
+    for (int j = 0; j < side; ++j) {
+      const std::string from = "n" + std::to_string(i) + "_" + std::to_string(j);
+      for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{0, 1}}) {
+        if (i + di >= side || j + dj >= side) continue;
+        text << "\n[[structure.beams]]\nnodes = [\"" << from << "\", \"n" << i + di << "_" << j + dj
+             << "\"]\nwidth = 2e-6\n";
+      }
+    }
+  }
+  return text.str();
+}
+
+// A device's size is bounded as a whole, on its netlist before any model is built (exit 2 naming
+// the key that made it, its value and the limit, not a run that exhausts memory): model.elements
+// multiplied by the folded flexure's eight members, beams of a netlist that each give their own
+// count, and a grid whose band would make its matrices too large though its elements are few.
+// The benchmarks' folded flexure (125 elements a beam) runs, and the largest allowed is read.
+TEST(DeviceCliTest, ADeviceTooLargeForMemoryIsInvalidInputBeforeItIsBuilt) {
+  EXPECT_EQ(InvalidInput({"run", "folded-flexure", "--set", "model.elements=100000"}),
+            "cosmems: --set: model.elements = 100000: the device's 8 members make 800000 "
+            "elements, more than the 500000 a device's model may hold (doc/scenes.md, Limits)\n");
+  const testing::TempDirectory dir;
+  std::string chain =
+      "[structure]\nkind = \"frame\"\nthickness = 2e-6\n\n[material]\nyoung_modulus = "
+      "160e9\ndensity = 2330.0\n\n[analysis]\ntype = \"modal\"\n";
+  for (int n = 0; n <= 6; ++n) {
+    chain += "\n[[structure.nodes]]\nname = \"n" + std::to_string(n) + "\"\nposition = [" +
+             std::to_string(n * 100e-6) + ", 0.0, 0.0]\n" +
+             (n == 0 ? "support = \"clamped\"\n" : "");
+  }
+  for (int n = 0; n < 6; ++n) {
+    chain += "\n[[structure.beams]]\nnodes = [\"n" + std::to_string(n) + "\", \"n" +
+             std::to_string(n + 1) +
+             "\"]\nwidth = 2e-6\nelements = " + (n == 2 ? "95000" : "90000") + "\n";
+  }
+  const std::string chain_file = (dir.path() / "chain.toml").string();
+  testing::WriteFile(chain_file, chain);
+  EXPECT_EQ(InvalidInput({"run", chain_file}),
+            "cosmems: " + chain_file +
+                ": structure.beams[2].elements = 95000: the device's 6 members make 545000 "
+                "elements, more than the 500000 a device's model may hold (doc/scenes.md, "
+                "Limits)\n");
+
+  const std::string grid_file = (dir.path() / "grid.toml").string();
+  testing::WriteFile(grid_file, Grid(30));
+  ExpectContains(InvalidInput({"run", grid_file, "--set", "model.elements=100"}),
+                 "cosmems: --set: model.elements = 100: the device's 1740 members make 174000 "
+                 "elements and 1038780 unknowns in a band of up to 353: about 37.4 GB, more than "
+                 "the 16 GB a device's model may take (doc/scenes.md, Limits)\n");
+  EXPECT_EQ(RunJson({grid_file, "--set", "model.elements=2"})["status"], "ok");
+
+  const nlohmann::json benchmark = RunJson({"folded-flexure", "--set", "model.elements=125"});
+  EXPECT_EQ(benchmark["status"], "ok");
+  EXPECT_EQ(benchmark["model"]["dofs"], 5970);
+  EXPECT_NO_THROW(LoadScene("folded-flexure", {{"model.elements", "62500"}}));
+}
+
 }  // namespace
 }  // namespace cosmems

@@ -124,6 +124,12 @@ TEST(FrameCliTest, NetlistErrorsNameTheEntryAndTheKey) {
   std::string text = Plate();
   text.replace(text.find("nodes = [\"a2\", \"c2\"]"), 20, "nodes = [\"a2\", \"x2\"]");
   ExpectContains(error(text), "structure.beams[2].nodes = [\"a2\", \"x2\"]: no node \"x2\"");
+  // A name with a control character, quoted in the value as TOML writes it and in the reason
+  // escaped, never as the raw byte.
+  text = Plate();
+  text.replace(text.find("nodes = [\"a2\", \"c2\"]"), 20, "nodes = [\"a2\", \"\\u001b[2J\"]");
+  ExpectContains(error(text),
+                 "structure.beams[2].nodes = [\"a2\", \"\\u001B[2J\"]: no node \"\\x1B[2J\"");
   text = Plate();
   text.replace(text.find("body = \"plate\""), 14, "body = \"slab\"");
   ExpectContains(error(text), "loads.points[0].body = \"slab\": no body \"slab\"");
@@ -319,15 +325,47 @@ type = "buckling"
   ExpectContains(pulled["warnings"].dump(), "the loads compress no member");
 }
 
-TEST(FrameCliTest, AFreeFloatingFrameIsANumericalFailureNotANaN) {
+// A netlist that its supports do not hold is invalid input naming structure.nodes and the part
+// that floats, found on the netlist before any model is built: a part with no support at all,
+// and one whose supports leave it a rigid motion (anchors that fix only uy let the plate slide
+// in its plane). The library's solvers still report such a model as not positive definite.
+TEST(FrameCliTest, AnUnsupportedNetlistIsInvalidInputNamingThePartThatFloats) {
   const TempDirectory dir;
+  auto error = [&](const std::string& text) {
+    WriteFile(dir.path() / "loose.toml", text);
+    return InvalidInput({"run", (dir.path() / "loose.toml").string()});
+  };
   std::string text = Plate();
   for (std::size_t at; (at = text.find("support = \"clamped\"")) != std::string::npos;) {
     text.replace(at, 19, "support = [\"uy\"]");
   }
-  WriteFile(dir.path() / "loose.toml", text);
-  const nlohmann::json json = RunJson({(dir.path() / "loose.toml").string()}, 3);
-  EXPECT_EQ(json["status"], "not positive definite (is the structure supported?)");
+  ExpectContains(error(text),
+                 "loose.toml: structure.nodes: nodes \"a0\", \"c0\", \"a1\", \"c1\" and 4 more "
+                 "(with 4 beams, the body \"plate\") float: the supports at \"a0\", \"a1\", "
+                 "\"a2\" and \"a3\" leave them a rigid motion, a translation along [1, 0, 0] (fix "
+                 "more of the dofs");
+
+  text = Plate();
+  for (std::size_t at; (at = text.find("support = \"clamped\"\n")) != std::string::npos;) {
+    text.replace(at, 20, "");
+  }
+  ExpectContains(error(text),
+                 "structure.nodes: nodes \"a0\", \"c0\", \"a1\", \"c1\" and 4 more "
+                 "(with 4 beams, the body \"plate\") float: no support holds them");
+
+  // A beam beside the held plate, and a node on its own with a pin that leaves it turning.
+  const std::string loose_beam =
+      "\n[[structure.nodes]]\nname = \"x\"\nposition = [0.0, 50e-6, 0.0]\n"
+      "\n[[structure.nodes]]\nname = \"y\"\nposition = [0.0, 50e-6, 80e-6]\n"
+      "\n[[structure.beams]]\nnodes = [\"x\", \"y\"]\nwidth = 2e-6\nmaterial = \"poly\"\n";
+  ExpectContains(
+      error(Plate(loose_beam)),
+      "structure.nodes: nodes \"x\" and \"y\" (with 1 beam) float: no support holds them "
+      "(give one of them a support");
+  ExpectContains(error(Plate("\n[[structure.nodes]]\nname = \"pin\"\nposition = [0.0, 0.0, "
+                             "90e-6]\nsupport = \"pinned\"\n")),
+                 "structure.nodes: node \"pin\" floats: the support at \"pin\" leaves it a rigid "
+                 "motion, a rotation about [0, 1, 0]");
 }
 
 }  // namespace

@@ -480,6 +480,48 @@ TEST(RunCliTest, UsageErrorsAreOneLineWithExitTwo) {
             "keys)\n");
 }
 
+// Text a terminal would act on: every C0 control but the closing line feed, DEL, and the C1
+// controls (UTF-8 C2 80 ... C2 9F; C2 9B starts an escape sequence on some terminals).
+void ExpectPrintable(const std::string& text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const bool closing = i + 1 == text.size() && c == '\n';
+    EXPECT_TRUE(closing || (c >= 0x20 && c != 0x7F)) << "byte " << i << " of: " << text;
+    if (c == 0xC2 && i + 1 < text.size()) {
+      EXPECT_GE(static_cast<unsigned char>(text[i + 1]), 0xA0) << "byte " << i << " of: " << text;
+    }
+  }
+}
+
+// A --set value, a file name, a command or an option that holds control characters (a title
+// sequence, a screen clear) is echoed escaped, so that the message cannot retitle or garble the
+// terminal: \n, \r and \t by name, other controls and invalid UTF-8 byte by byte as \xNN.
+TEST(RunCliTest, EchoedTextIsEscapedNotSentToTheTerminal) {
+  std::string err =
+      InvalidInput({"run", "cantilever", "--set", "structure.length=\x1b]0;owned\x07"});
+  ExpectPrintable(err);
+  ExpectContains(err, "--set: structure.length = \\x1B]0;owned\\x07: not a TOML value");
+  const std::string csi = "\xc2\x9b";  // U+009B, the C1 control sequence introducer
+  err = InvalidInput({"run", "cantilever", "--set", "device.trajectory=a\tb" + csi + "2J\xff"});
+  ExpectPrintable(err);
+  ExpectContains(err, "device.trajectory = a\\tb\\xC2\\x9B2J\\xFF: not a TOML value");
+  err = InvalidInput({"run", "no\x1b[2Jscene.toml"});
+  ExpectPrintable(err);
+  ExpectContains(err, "cosmems: no\\x1B[2Jscene.toml: cannot open scene file");
+  err = InvalidInput({"show", "\x1b[31mred"});
+  ExpectPrintable(err);
+  ExpectContains(err, "cosmems: \\x1B[31mred: not an embedded scene");
+  err = InvalidInput({"ru\x1bn"});
+  ExpectPrintable(err);
+  ExpectContains(err, "unknown command \"ru\\x1Bn\"");
+  err = InvalidInput({"run", "cantilever", "--bo\rgus"});
+  ExpectPrintable(err);
+  ExpectContains(err, "--bo\\rgus");
+  // Printable UTF-8 passes unchanged.
+  ExpectContains(InvalidInput({"run", "d\xc3\xa9j\xc3\xa0.toml"}),
+                 "d\xc3\xa9j\xc3\xa0.toml: cannot open");
+}
+
 TEST(RunCliTest, UnwritableOutIsInvalidInput) {
   const TempDirectory dir;
   const std::filesystem::path file = dir.path() / "a_file";
