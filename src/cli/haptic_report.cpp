@@ -1,9 +1,11 @@
 #include "haptic_report.hpp"
 
 #include <chrono>
+#include <iostream>
+#include <sstream>
 #include <thread>
 
-#include "cli_input_error.hpp"
+#include "atomic_file.hpp"
 #include "contact_report.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
@@ -54,6 +56,10 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   r.device_model = device.specs().model;
   r.bounded_specs = device.specs().bounded_fields;
   r.calibration = device.Calibration();
+  if (r.calibration != CalibrationStatus::kOk) {
+    // Said now, not after the run: the person at the device has to act for forces to come on.
+    std::cerr << "cosmems: " << session.DeviceAlert() << "\n";
+  }
   session.Start();
   RunSession(scene, opened);
   session.Stop();
@@ -85,9 +91,8 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
           "built without the OpenHaptics SDK: the device is the project's fake of the HD API, "
           "whose stylus stands still");
     }
-    if (opened.openhaptics->servo_ended()) {
-      header.warnings.push_back("the device's scheduler stopped the servo loop: " +
-                                opened.openhaptics->last_error().description);
+    if (const std::string fault = session.ServoFault(); !fault.empty()) {
+      header.warnings.push_back(fault);
     }
   }
   device.Close();
@@ -102,7 +107,10 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
                               "value is used");
   }
   if (r.calibration != CalibrationStatus::kOk) {
-    header.warnings.push_back(std::string("device calibration: ") + ToString(r.calibration));
+    header.warnings.push_back(std::string("device calibration at the start: ") +
+                              ToString(r.calibration) + "; forces were held off for " +
+                              std::to_string(r.safety.uncalibrated_ticks) +
+                              " ticks until it was calibrated");
   }
   if (device_scene.realtime && !r.servo.realtime && !r.realtime_note.empty()) {
     header.warnings.push_back("not real-time: " + r.realtime_note);
@@ -136,7 +144,8 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
                     {"device_faults", r.safety.device_faults},
                     {"passivity_activations", r.safety.passivity_activations},
                     {"output_guards", r.safety.output_guards},
-                    {"ramp_down_ticks", r.safety.ramp_down_ticks}};
+                    {"ramp_down_ticks", r.safety.ramp_down_ticks},
+                    {"uncalibrated_ticks", r.safety.uncalibrated_ticks}};
   json["scaling"] = {{"position_scale", r.position_scale},
                      {"force_scale", r.force_scale},
                      {"coupling_stiffness_n_per_m", r.coupling_n_per_m},
@@ -178,11 +187,9 @@ void HapticReport::PrintResults(std::ostream& out) const {
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {
   if (!results_.hd_library.empty()) return;  // a real device's ticks are not recorded
-  try {
-    WriteSamplesCsv((directory / "device_forces.csv").string(), results_.forces);
-  } catch (const std::runtime_error& e) {
-    throw CliInputError(e.what());
-  }
+  std::ostringstream text;
+  WriteSamplesCsv(text, results_.forces);
+  AtomicFile::WriteWhole(directory / "device_forces.csv", text.str());
 }
 
 }  // namespace cosmems::internal

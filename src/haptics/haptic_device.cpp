@@ -40,6 +40,7 @@ double HapticDevice::force_limit_n() const { return safety_ ? safety_->force_lim
 
 DeviceStatus HapticDevice::Start(ServoClient& client) {
   if (!open_ || running_) return DeviceStatus::kInvalidState;
+  if (Paced() && client.BlocksTheTick()) return DeviceStatus::kRefused;
   client_ = &client;
   client.OnStart();
   safety_->Restart();
@@ -67,8 +68,9 @@ Eigen::Vector3d HapticDevice::ServoTick(const DeviceState& state) noexcept {
   const double start_s = NowSeconds();
   if (recorder_.stats().ticks == 0) recorder_.MarkRealtime(Realtime());
   ForceCommand command;
-  // A state the device got wrong is not shown to the client; the safety layer zeroes the force.
-  if (SafetyLayer::Usable(state)) {
+  // A state the device got wrong, or cannot place yet (uncalibrated), is not shown to the
+  // client; the safety layer zeroes the force.
+  if (state.calibrated && SafetyLayer::Usable(state)) {
     client_->Tick(state, command);
   } else {
     command.valid = false;

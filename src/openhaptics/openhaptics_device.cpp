@@ -7,7 +7,10 @@
 #include <cstdint>
 #include <initializer_list>
 #include <limits>
+#include <mutex>
+#include <set>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace cosmems {
@@ -73,6 +76,31 @@ HDenum Calibrate(HDint styles) {
   return status;
 }
 
+// The devices this process's OpenHapticsDevices hold, by configured name. hdInitDevice cannot
+// tell a live session in this process from a handle a crash left behind, so the claim does: a
+// second Open() of a claimed device is refused before the HD API is asked.
+class DeviceClaims {
+ public:
+  static bool Claim(const std::string& name) {
+    std::lock_guard<std::mutex> lock(Mutex());
+    return Held().insert(name).second;
+  }
+  static void Release(const std::string& name) {
+    std::lock_guard<std::mutex> lock(Mutex());
+    Held().erase(name);
+  }
+
+ private:
+  static std::mutex& Mutex() {
+    static std::mutex mutex;
+    return mutex;
+  }
+  static std::set<std::string>& Held() {
+    static std::set<std::string> held;
+    return held;
+  }
+};
+
 CalibrationStatus ToStatus(HDenum status) {
   switch (status) {
     case HD_CALIBRATION_OK:
@@ -93,10 +121,12 @@ struct OpenHapticsDevice::Session {
   HDint calibration_styles = 0;
   double rate_hz = 1000.0;
   bool running = false;
+  std::string claim;  // the name this device is claimed under while open
 
   // The servo thread's, between StartServo() and StopServo().
   std::uint64_t tick = 0;
   bool fault_pending = false;  // a force error at the last tick: tell the next one
+  bool forces_on = false;      // HD_FORCE_OUTPUT as this loop last set it
 
   // Shared.
   std::atomic<HDenum> calibration{HD_CALIBRATION_OK};
@@ -149,6 +179,14 @@ HDCallbackCode OpenHapticsDevice::Session::Tick(OpenHapticsDevice& owner) noexce
   if (calibration.load(std::memory_order_relaxed) != HD_CALIBRATION_OK) {
     calibration.store(Calibrate(calibration_styles), std::memory_order_relaxed);
   }
+  // An uncalibrated device places the stylus wrongly, so a force computed from it pushes the
+  // hand the wrong way: the motors stay off until the calibration is OK, and the safety layer
+  // holds the force at zero meanwhile (so that it ramps in once they come on).
+  state.calibrated = calibration.load(std::memory_order_relaxed) == HD_CALIBRATION_OK;
+  if (state.calibrated != forces_on) {
+    state.calibrated ? hdEnable(HD_FORCE_OUTPUT) : hdDisable(HD_FORCE_OUTPUT);
+    forces_on = state.calibrated;
+  }
 
   const bool stop = stopping.load(std::memory_order_acquire);
   const Eigen::Vector3d force_n = stop ? owner.ServoRampDown() : owner.ServoTick(state);
@@ -177,6 +215,11 @@ HDCallbackCode OpenHapticsDevice::Session::Triage() noexcept {
     fault_pending = fault_pending || IsForceError(e.errorCode);
   }
   if (!fatal) return HD_CALLBACK_CONTINUE;
+  // The link failed: the frame's command may never have arrived and the amplifiers may hold the
+  // last force, with no tick left to bring it down. Motors off now, not at the next Stop().
+  hdDisable(HD_FORCE_OUTPUT);
+  forces_on = false;
+  DrainErrors();  // the disable's own complaint over a dead link is not news
   ended.store(true);
   return HD_CALLBACK_DONE;
 }
@@ -219,10 +262,18 @@ DeviceStatus OpenHapticsDevice::OpenBackend(DeviceSpecs& specs) {
   DrainErrors();  // earlier calls' errors are not this one's
   const HDstring name =
       options_.device_name.empty() ? HD_DEFAULT_DEVICE : options_.device_name.c_str();
+  // By the configured name; empty is the default device (HD_DEFAULT_DEVICE is a null name).
+  if (!DeviceClaims::Claim(options_.device_name)) {
+    // A live session of this process has it: leave that session's device alone.
+    s.Record(HDErrorInfo{HD_DEVICE_ALREADY_INITIATED, 0, HD_INVALID_HANDLE});
+    return DeviceStatus::kAlreadyInUse;
+  }
+  s.claim = options_.device_name;
   HHD device = hdInitDevice(name);
   HDErrorInfo error = DrainErrors();
-  // After a crash the driver may still hold the device: release what this process holds and
-  // try again. A device held by another program stays refused.
+  // After a crash the driver may still hold the device: no live session here claims it (see
+  // above), so release what this process holds and try again. A device held by another program
+  // stays refused.
   for (int i = 0; i < kInitRetries && error.errorCode == HD_DEVICE_ALREADY_INITIATED; ++i) {
     const HHD stale = hdGetCurrentDevice();
     if (stale != HD_INVALID_HANDLE) hdDisableDevice(stale);
@@ -232,6 +283,8 @@ DeviceStatus OpenHapticsDevice::OpenBackend(DeviceSpecs& specs) {
   }
   if (HD_DEVICE_ERROR(error) || device == HD_INVALID_HANDLE) {
     s.Record(error);
+    DeviceClaims::Release(s.claim);
+    s.claim.clear();
     return error.errorCode == HD_DEVICE_ALREADY_INITIATED ? DeviceStatus::kAlreadyInUse
                                                           : DeviceStatus::kNotFound;
   }
@@ -274,6 +327,8 @@ DeviceStatus OpenHapticsDevice::StartServo() {
   Session& s = *session_;
   CheckCalibration();  // tells the loop whether it still has to watch the calibration
   hdMakeCurrentDevice(s.device);
+  // Starting the scheduler turns the motors on; the first tick turns them off again while the
+  // device is not calibrated (Session::Tick).
   hdEnable(HD_FORCE_OUTPUT);
   hdEnable(HD_MAX_FORCE_CLAMPING);  // the device's own clamp, behind the safety layer's
   hdSetSchedulerRate(static_cast<HDulong>(options_.scheduler_rate_hz));
@@ -284,6 +339,7 @@ DeviceStatus OpenHapticsDevice::StartServo() {
   }
   s.tick = 0;
   s.fault_pending = false;
+  s.forces_on = true;
   s.ended.store(false);
   s.stopping.store(false);
   s.ramped.store(false);
@@ -336,6 +392,8 @@ void OpenHapticsDevice::CloseBackend() noexcept {
   hdDisableDevice(s.device);
   s.Record(DrainErrors());
   s.device = HD_INVALID_HANDLE;
+  DeviceClaims::Release(s.claim);
+  s.claim.clear();
 }
 
 }  // namespace cosmems

@@ -141,6 +141,20 @@ void HapticSession::Start() {
   }
 }
 
+std::string HapticSession::ServoFault() const {
+  if (!opened_.openhaptics || !opened_.openhaptics->servo_ended()) return {};
+  return "the device's scheduler stopped the servo loop (" +
+         opened_.openhaptics->last_error().description + "); its motors are off";
+}
+
+std::string HapticSession::DeviceAlert() {
+  std::string fault = ServoFault();
+  if (!fault.empty()) return fault;
+  const CalibrationStatus calibration = opened_.device->Calibration();
+  if (calibration == CalibrationStatus::kOk) return {};
+  return std::string("forces are off until the device is calibrated: ") + ToString(calibration);
+}
+
 void HapticSession::Stop() {
   opened_.device->Stop();
   loop_.StopPhysics();

@@ -84,6 +84,11 @@ void Panel::DrawState(const PanelStatus& status, PanelActions& actions) const {
   ImGui::TextWrapped("%s", status.scene.c_str());
   ImGui::TextDisabled("%s, %d dofs", status.device.c_str(), status.dofs);
   if (!status.input_note.empty()) ImGui::TextWrapped("%s", status.input_note.c_str());
+  if (!status.device_alert.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kAlarm);
+    ImGui::TextWrapped("%s", status.device_alert.c_str());
+    ImGui::PopStyleColor();
+  }
   ImGui::Separator();
   const ContactState state = status.frame ? status.frame->contact.state : ContactState::kFree;
   const bool stuck = state == ContactState::kStuck;

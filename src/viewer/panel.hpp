@@ -12,10 +12,11 @@ namespace cosmems::viewer {
 
 /// What the panel shows about the running session.
 struct PanelStatus {
-  std::string scene;       ///< the scene's source
-  std::string device;      ///< the stylus: model and backend
-  std::string input_note;  ///< why the input is not what was asked for, if it is not
-  int dofs = 0;            ///< of the running model
+  std::string scene;         ///< the scene's source
+  std::string device;        ///< the stylus: model and backend
+  std::string input_note;    ///< why the input is not what was asked for, if it is not
+  std::string device_alert;  ///< HapticSession::DeviceAlert(): a failed servo, no calibration
+  int dofs = 0;              ///< of the running model
   const HapticFrame* frame = nullptr;
   LoopStats servo;               ///< the device's figures so far
   double display_rate_hz = 0.0;  ///< frames drawn per second of wall time

@@ -268,6 +268,7 @@ class ViewerApp {
     status.device = session_->opened().device->specs().model + std::string(" (") +
                     ToString(session_->input()) + ")";
     status.input_note = session_->input_note();
+    status.device_alert = session_->DeviceAlert();
     status.dofs = session_->dofs();
     status.frame = &frame;
     status.servo = session_->opened().device->stats();

@@ -19,6 +19,10 @@ class RunningSession final : public ViewerSession {
   const HapticFrame& frame() const override { return session_.loop().frame(); }
   void RequestReset() override { session_.loop().RequestReset(); }
   void Stop() override { session_.Stop(); }
+  std::string DeviceAlert() override {
+    if (!session_.ServoFault().empty()) session_.Stop();
+    return session_.DeviceAlert();
+  }
   const OpenedDevice& opened() const override { return session_.opened(); }
   int dofs() const override { return session_.physics().DofCount(); }
   const LoopStats& physics_stats() const override { return session_.loop().physics_stats(); }

@@ -41,6 +41,9 @@ class ViewerSession {
   virtual void RequestReset() = 0;
   /// Stops the servo loop and the physics; the figures are complete afterwards.
   virtual void Stop() = 0;
+  /// HapticSession::DeviceAlert(). When the servo loop ended on its own (a device's scheduler
+  /// failed), the session is stopped here too (motors off, physics joined), and the alert stays.
+  virtual std::string DeviceAlert() = 0;
   virtual const OpenedDevice& opened() const = 0;
   virtual int dofs() const = 0;
   /// The physics thread's tick times: complete only after Stop().

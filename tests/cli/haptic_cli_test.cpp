@@ -2,6 +2,7 @@
 // tip onto the substrate; as fast as possible (realtime = false) the run is deterministic.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -11,11 +12,14 @@
 namespace cosmems {
 namespace {
 
+using testing::Cli;
+using testing::CliOutcome;
 using testing::ExpectContains;
 using testing::InvalidInput;
 using testing::ReadLines;
 using testing::RunJson;
 using testing::TempDirectory;
+using testing::WriteFile;
 
 const std::vector<std::string> kFast = {"--set", "device.realtime=false", "--set",
                                         "analysis.duration=2.0"};
@@ -101,6 +105,7 @@ TEST(HapticCliTest, TheOpenHapticsBackendRunsTheSceneForItsDuration) {
   EXPECT_EQ(device.at("backend"), "openhaptics");
   EXPECT_EQ(device.at("model"), "PHANTOM Omni");
   EXPECT_EQ(device.at("calibration"), "calibrated");
+  EXPECT_EQ(json.at("safety").at("uncalibrated_ticks"), 0);
   EXPECT_TRUE(json.at("paced").get<bool>());
   // It ran for the scene's 0.5 s. How many ticks the device scheduler ran in that time is the
   // machine's business (bench/haptic_run_bench measures the rate): here only that it ticked.
@@ -112,6 +117,25 @@ TEST(HapticCliTest, TheOpenHapticsBackendRunsTheSceneForItsDuration) {
     EXPECT_GT(json.at("max_device_force_n").get<double>(), 0.0);  // it rests in the beam
     ExpectContains(json.at("warnings").dump(), "fake of the HD API");
   }
+}
+
+// The recorded forces of --out appear whole or not at all, and a symbolic link in their place is
+// replaced, never written through.
+TEST(HapticCliTest, TheRecordedForcesNeverWriteThroughASymbolicLink) {
+  const TempDirectory dir;
+  const std::filesystem::path precious = dir.path() / "precious.txt", out = dir.path() / "out";
+  WriteFile(precious, "precious\n");
+  std::filesystem::create_directories(out);
+  std::filesystem::create_symlink(precious, out / "device_forces.csv");
+  const CliOutcome run =
+      Cli({"run", "cantilever-haptic", "--set", "device.realtime=false", "--out", out.string()});
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_EQ(ReadLines(precious), std::vector<std::string>{"precious"});
+  EXPECT_FALSE(std::filesystem::is_symlink(out / "device_forces.csv"));
+  const std::vector<std::string> lines = ReadLines(out / "device_forces.csv");
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines.front(), "time_s,x_m,y_m,z_m,fx_n,fy_n,fz_n");
+  EXPECT_GT(lines.size(), 6000u);  // 6 s of ticks at 1 kHz, and the header
 }
 
 // A device is touched as a beam is: the scripted stylus presses the folded flexure's first body

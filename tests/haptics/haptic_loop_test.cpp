@@ -1,13 +1,16 @@
 // The servo client that lets a hand touch the beam: the scaled force it asks for, the same
 // history run to run with the physics in the servo tick, and the physics on its own thread
-// (also run under ThreadSanitizer in cosmems_tsan_tests), and a stalled physics thread seen
-// through a whole device.
+// (also run under ThreadSanitizer in cosmems_tsan_tests), a stalled physics thread seen
+// through a whole device, the paced devices' refusal of physics in the tick, and physics that
+// fails without saying so.
 #include "cosmems/haptics/haptic_loop.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <memory>
+#include <new>
 #include <thread>
 #include <vector>
 
@@ -132,9 +135,10 @@ class HeldStylus final : public Trajectory {
 };
 
 // The whole loop (scripted device, safety layer, HapticLoop with its physics thread) when the
-// physics stalls: the model the servo renders ages, and once it is older than max_model_age_s
-// the force comes down to zero. A device started again (its clock back at 0) must not take the
-// model of the run before for a fresh one either.
+// physics stalls: the model the servo renders ages in wall time, and once it is older than
+// max_model_age_s the force comes down to zero, whatever the device's own clock says (this one
+// ticks only when told). A device started again must not take the model of the run before for a
+// fresh one either.
 TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) {
   const BeamModel<2> model = test::HapticCantilever();
   HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
@@ -144,11 +148,12 @@ TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) 
   scripted.clock = ScriptedClock::kManual;
   scripted.safety.ramp_in_s = 0.0;
   scripted.safety.slew_limit_n_per_s = 1e4;  // 10 N a tick: the force follows at once
+  // 50 ms: far above a physics tick's period and join, even on a loaded machine.
+  scripted.safety.max_model_age_s = 0.05;
   ScriptedDevice device(std::make_unique<HeldStylus>(options, 2500), scripted);  // 0.5 um deep
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);
   loop.StartPhysics();
   ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);
-  // The device ticks no faster than the physics thread, so the model stays fresh.
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (device.Recorded().empty() || device.Recorded().back().force_n.y() <= 0.0) {
     ASSERT_LT(std::chrono::steady_clock::now(), give_up) << "no force from the physics thread";
@@ -158,12 +163,16 @@ TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) 
   const long stale_before = device.safety_counters().stale_forces;
   loop.StopPhysics();  // the physics stalls; the servo ticks on
   const std::uint64_t stalled_at = device.ticks();
-  device.Step(100);
+  // At least 1 ms of wall time a tick: tick k after the stall renders a model at least k ms old.
+  for (int tick = 0; tick < 100; ++tick) {
+    device.Step(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
   std::vector<ScriptedSample> samples = device.Recorded();
-  EXPECT_GT(samples[stalled_at].force_n.y(), 0.0);  // a model 1 ms old is still rendered
+  EXPECT_GT(samples[stalled_at].force_n.y(), 0.0);  // a model a few ms old is still rendered
   EXPECT_EQ(samples.back().force_n.norm(), 0.0);
-  // 10 ms of age at 1 ms a tick, then every tick stale.
-  EXPECT_GE(device.safety_counters().stale_forces - stale_before, 85);
+  // Every tick from the 50th on renders a model over 50 ms old.
+  EXPECT_GE(device.safety_counters().stale_forces - stale_before, 50);
 
   device.Stop();
   ASSERT_EQ(device.Start(loop), DeviceStatus::kOk);
@@ -172,6 +181,99 @@ TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) 
   ASSERT_EQ(samples.size(), 100u);
   for (const ScriptedSample& s : samples) ASSERT_EQ(s.force_n.norm(), 0.0) << s.time_s;
   device.Stop();
+}
+
+// The physics on its own thread is the default; inside the tick nothing watches how long the
+// physics takes, so a paced device (a script on the wall clock, a real device's scheduler)
+// refuses it, and an unpaced one (as fast as possible) takes it.
+TEST(HapticLoopTest, APacedDeviceRefusesPhysicsInsideTheServoTick) {
+  EXPECT_EQ(HapticLoopOptions{}.physics, PhysicsThread::kOwn);
+  const BeamModel<2> model = test::HapticCantilever();
+  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  HapticLoop in_tick(beam, Options(PhysicsThread::kServo));
+  const HapticLoopOptions options = Options(PhysicsThread::kOwn);
+  ScriptedOptions paced;
+  paced.clock = ScriptedClock::kPaced;
+  ScriptedDevice device(std::make_unique<HeldStylus>(options, 0), paced);
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  EXPECT_EQ(device.Start(in_tick), DeviceStatus::kRefused);
+  EXPECT_FALSE(device.is_running());
+  ScriptedOptions fast;
+  fast.clock = ScriptedClock::kManual;
+  ScriptedDevice unpaced(std::make_unique<HeldStylus>(options, 0), fast);
+  ASSERT_EQ(unpaced.Open(), DeviceStatus::kOk);
+  EXPECT_EQ(unpaced.Start(in_tick), DeviceStatus::kOk);
+  unpaced.Stop();
+}
+
+// Physics that goes wrong in ways its status does not say: a model with a NaN stiffness, and a
+// reset that throws (it may allocate). Each is a failed tick with an invalid model, inside a
+// noexcept tick, and the next good tick renders again.
+class FaultyPhysics final : public HapticPhysics {
+ public:
+  enum class Fault { kNone, kNaNStiffness, kNaNNormal, kThrowOnReset };
+  Fault fault = Fault::kNone;
+  Status Advance(const Eigen::Vector3d& probe_m, double source_time_s) override {
+    model_ = LocalModel{};
+    model_.probe_m = probe_m;
+    model_.source_time_s = source_time_s;
+    model_.force_n = 1e-6;
+    model_.stiffness_n_per_m = 1.0;
+    model_.valid = true;
+    if (fault == Fault::kNaNStiffness) model_.stiffness_n_per_m = std::nan("");
+    if (fault == Fault::kNaNNormal) model_.normal.x() = std::nan("");
+    return Status::kOk;
+  }
+  Status Reset() override {
+    if (fault == Fault::kThrowOnReset) throw std::bad_alloc();
+    return Status::kOk;
+  }
+  const LocalModel& local_model() const override { return model_; }
+  double tick_s() const override { return 1e-3; }
+  int DofCount() const override { return 0; }
+  HapticFrame MakeFrame() const override { return HapticFrame{}; }
+  void Fill(HapticFrame&) const override {}
+
+ private:
+  LocalModel model_;
+};
+
+TEST(HapticLoopTest, ANonFiniteModelOrAThrowingResetIsAFailedTick) {
+  FaultyPhysics physics;
+  HapticLoopOptions options = Options(PhysicsThread::kServo);
+  options.reset_button = 0;
+  HapticLoop loop(physics, options);
+  DeviceState state;
+  auto tick = [&](FaultyPhysics::Fault fault, std::uint32_t buttons) {
+    physics.fault = fault;
+    state.buttons = buttons;
+    ForceCommand command;
+    loop.Tick(state, command);
+    state.time_s += 1e-3;
+    return command;
+  };
+  EXPECT_TRUE(tick(FaultyPhysics::Fault::kNone, 0).valid);
+  EXPECT_FALSE(tick(FaultyPhysics::Fault::kNaNStiffness, 0).valid);
+  EXPECT_FALSE(tick(FaultyPhysics::Fault::kNaNNormal, 0).valid);
+  EXPECT_FALSE(tick(FaultyPhysics::Fault::kThrowOnReset, 1u).valid);  // the button's press
+  EXPECT_EQ(loop.failed_ticks(), 3u);
+  const ForceCommand good = tick(FaultyPhysics::Fault::kNone, 0);
+  EXPECT_TRUE(good.valid);
+  EXPECT_TRUE(good.force_n.allFinite());
+  EXPECT_EQ(loop.failed_ticks(), 3u);
+}
+
+// After a stall the physics thread does not run the ticks it missed back to back: their
+// deadlines are dropped. A sleep of at least 30 ms at 1 kHz passes at least 29 of them.
+TEST(PeriodicDeadlineTest, SkippingDropsTheDeadlinesAStallPassed) {
+  PeriodicDeadline skip(1000.0, CatchUp::kSkip);
+  std::this_thread::sleep_for(std::chrono::milliseconds(30));
+  skip.SleepUntilNext();
+  EXPECT_GE(skip.skipped(), 29u);
+  PeriodicDeadline all(1000.0);  // the device clock's kind keeps every tick
+  std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  all.SleepUntilNext();
+  EXPECT_EQ(all.skipped(), 0u);
 }
 
 // The panel's "Reset Failure": asked for from another thread while the beam lies stuck where the

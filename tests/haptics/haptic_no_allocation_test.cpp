@@ -32,6 +32,7 @@ TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing
   physics.damping = DampingModel::QualityFactor(100);
   HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
   HapticLoopOptions options;
+  options.physics = PhysicsThread::kServo;  // the test ticks the loop itself, unpaced
   options.scaling.position_scale = 5000.0;
   options.scaling.force_scale = 2e5;
   HapticLoop loop(beam, options);

@@ -20,6 +20,7 @@ struct ReferenceTouch {
 
   static HapticLoopOptions LoopOptions(const DeviceSpecs& specs, double coupling) {
     HapticLoopOptions options;
+    options.physics = PhysicsThread::kServo;  // the tests drive unpaced (manual) devices
     options.scaling = ReferenceHandScaling(specs, coupling);
     return options;
   }

@@ -148,6 +148,57 @@ TEST(SafetyLayerTest, PassivityControllerTakesBackTheEnergyAnActiveWorldMakes) {
   EXPECT_LE(energy_to_hand, specs.max_damping_ns_per_m * 0.05 * 0.05 * layer.period());
 }
 
+// Minutes of dissipative contact (a 4 N s/m damper under a hand moving at up to 0.05 m/s for
+// 120 s banks about 0.6 J) must not pay for a later active world: the credit is bounded by the
+// ceiling (the force limit times the workspace's diagonal, 0.88 N x 0.2 m for the Omni), so the
+// active world (80 s of it could give 0.4 J unopposed) gives the hand at most that, plus a tick
+// of the damper's largest power.
+TEST(SafetyLayerTest, BankedEnergyIsBoundedSoALaterActiveWorldIsStillOpposed) {
+  const DeviceSpecs specs = BuiltInSpecs("PHANTOM Omni");
+  SafetyOptions options;
+  options.ramp_in_s = 0.0;
+  SafetyLayer layer(options, specs);
+  const double ceiling =
+      layer.force_limit() * (specs.workspace_max_m - specs.workspace_min_m).norm();
+  EXPECT_DOUBLE_EQ(layer.passivity_energy_limit(), ceiling);
+  double banked = 0.0;
+  for (int tick = 0; tick < 120000; ++tick) {
+    DeviceState state;
+    state.velocity_m_s = Eigen::Vector3d(0.0, 0.05 * std::sin(0.01 * tick), 0.0);
+    ForceCommand command;
+    command.force_n = -4.0 * state.velocity_m_s;
+    banked -= layer.Filter(state, command).dot(state.velocity_m_s) * layer.period();
+  }
+  ASSERT_GT(banked, 3.0 * ceiling);  // far more than the ceiling went in
+  ASSERT_EQ(layer.counters().passivity_activations, 0);
+  double energy_to_hand = 0.0;
+  for (int round = 0; round < 40; ++round) energy_to_hand += EnergyFromAnActiveWorld(layer);
+  EXPECT_GT(layer.counters().passivity_activations, 0);
+  EXPECT_LE(energy_to_hand, ceiling + specs.max_damping_ns_per_m * 0.05 * 0.05 * layer.period());
+  // A ceiling set by hand is the one used.
+  options.passivity_energy_limit_j = 1e-3;
+  EXPECT_EQ(SafetyLayer(options, specs).passivity_energy_limit(), 1e-3);
+}
+
+// An uncalibrated device does not know where the hand is: nothing is pushed until it is
+// calibrated, and then the force ramps in from zero rather than jumping.
+TEST(SafetyLayerTest, NoForceUntilTheDeviceIsCalibratedThenARampIn) {
+  SafetyOptions options;
+  options.passivity_control = false;
+  options.slew_limit_n_per_s = 1e6;
+  options.ramp_in_s = 0.1;  // 100 ticks at 1 kHz
+  SafetyLayer layer(options, BuiltInSpecs("Touch"));
+  DeviceState state;
+  state.calibrated = false;
+  ForceCommand command;
+  command.force_n = Eigen::Vector3d(0.0, 0.5, 0.0);
+  for (int tick = 0; tick < 50; ++tick) EXPECT_EQ(layer.Filter(state, command).norm(), 0.0);
+  EXPECT_EQ(layer.counters().uncalibrated_ticks, 50);
+  EXPECT_EQ(layer.counters().device_faults, 0);
+  state.calibrated = true;
+  EXPECT_NEAR(layer.Filter(state, command).y(), 0.5 / 100.0, 1e-12);
+}
+
 // Every extreme value in every component of position, velocity and force, alone and between
 // ordinary ticks, in long random runs: the output stays finite, bounded and slew-limited, the
 // last guard never has to step in (the inputs are sanitised before any arithmetic), and the
@@ -309,14 +360,17 @@ TEST(SafetyLayerTest, RejectsOptionsOutOfRangeByName) {
     double SafetyOptions::*member;
     double value;
   };
-  const Case cases[] = {{"max_model_age_s", &SafetyOptions::max_model_age_s, kInf},
-                        {"max_model_age_s", &SafetyOptions::max_model_age_s, kNaN},
-                        {"max_model_age_s", &SafetyOptions::max_model_age_s, 0.0},
-                        {"max_model_age_s", &SafetyOptions::max_model_age_s, 2.0},
-                        {"slew_limit_n_per_s", &SafetyOptions::slew_limit_n_per_s, 1e-300},
-                        {"slew_limit_n_per_s", &SafetyOptions::slew_limit_n_per_s, 1e7},
-                        {"ramp_in_s", &SafetyOptions::ramp_in_s, 1e300},
-                        {"force_limit_n", &SafetyOptions::force_limit_n, kInf}};
+  const Case cases[] = {
+      {"max_model_age_s", &SafetyOptions::max_model_age_s, kInf},
+      {"max_model_age_s", &SafetyOptions::max_model_age_s, kNaN},
+      {"max_model_age_s", &SafetyOptions::max_model_age_s, 0.0},
+      {"max_model_age_s", &SafetyOptions::max_model_age_s, 2.0},
+      {"slew_limit_n_per_s", &SafetyOptions::slew_limit_n_per_s, 1e-300},
+      {"slew_limit_n_per_s", &SafetyOptions::slew_limit_n_per_s, 1e7},
+      {"ramp_in_s", &SafetyOptions::ramp_in_s, 1e300},
+      {"force_limit_n", &SafetyOptions::force_limit_n, kInf},
+      {"passivity_energy_limit_j", &SafetyOptions::passivity_energy_limit_j, -1.0},
+      {"passivity_energy_limit_j", &SafetyOptions::passivity_energy_limit_j, kNaN}};
   for (const Case& c : cases) {
     SafetyOptions bad;
     bad.*c.member = c.value;

@@ -82,15 +82,27 @@ TEST_F(FakeForceTest, SoftwareLimitRefusesTooLargeAForce) {
   EXPECT_TRUE(script_.errors.empty());
 }
 
-TEST_F(FakeForceTest, InjectedErrorsRefuseTheirTicksForce) {
+TEST_F(FakeForceTest, AForceErrorRefusesItsTicksForce) {
   hdFakeInjectError(HD_WARM_MOTORS, 1);
-  hdFakeInjectError(HD_COMM_ERROR, 2);
   EXPECT_EQ(Tick(1.0, 0.0, 0.0)[0], 1.0);
   EXPECT_EQ(Tick(1.0, 0.0, 0.0)[0], 0.0);
   EXPECT_EQ(script_.errors, std::vector<HDerror>{HD_WARM_MOTORS});
-  EXPECT_EQ(Tick(1.0, 0.0, 0.0)[0], 0.0);
-  EXPECT_EQ(script_.errors, std::vector<HDerror>{HD_COMM_ERROR});
   EXPECT_EQ(Tick(1.0, 0.0, 0.0)[0], 1.0);
+}
+
+// A failed link loses the command, not the force: the amplifiers hold the last one until the
+// force output is turned off, which is why a servo loop must turn it off when its link fails.
+TEST_F(FakeForceTest, ALinkErrorKeepsTheLastForceUntilForceOutputIsOff) {
+  hdFakeInjectError(HD_COMM_ERROR, 1);
+  EXPECT_EQ(Tick(1.0, 0.0, 0.0)[0], 1.0);
+  EXPECT_EQ(Tick(2.0, 0.0, 0.0)[0], 1.0);
+  EXPECT_EQ(script_.errors, std::vector<HDerror>{HD_COMM_ERROR});
+  std::vector<double> latched(3);
+  hdFakeLatchedForce(latched.data());
+  EXPECT_EQ(latched[0], 1.0);
+  hdDisable(HD_FORCE_OUTPUT);
+  hdFakeLatchedForce(latched.data());
+  EXPECT_EQ(latched, (std::vector<double>{0.0, 0.0, 0.0}));
 }
 
 }  // namespace

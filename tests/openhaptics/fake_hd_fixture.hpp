@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "cosmems/openhaptics/openhaptics_device.hpp"
+
 namespace cosmems {
 
 /// Every test starts from, and leaves behind, a powered-on fake with nothing initialised (the
@@ -16,6 +18,15 @@ class FakeHdTest : public ::testing::Test {
   void SetUp() override { hdFakeReset(); }
   void TearDown() override { hdFakeReset(); }
 };
+
+/// Forces reach the device unchanged: a slew limit no test force reaches, and a ramp-in of
+/// `ramp_in_s` (none by default).
+inline OpenHapticsOptions Immediate(double ramp_in_s = 0.0) {
+  OpenHapticsOptions options;
+  options.safety.ramp_in_s = ramp_in_s;
+  options.safety.slew_limit_n_per_s = 1e6;
+  return options;
+}
 
 /// Empties the error stack, newest error first.
 inline std::vector<HDerror> PopErrors() {

@@ -22,14 +22,6 @@ class OpenHapticsDeviceTest : public FakeHdTest {
   }
 };
 
-// Forces reach the device unchanged: no ramp-in, a slew limit no test force reaches.
-OpenHapticsOptions Immediate() {
-  OpenHapticsOptions options;
-  options.safety.ramp_in_s = 0.0;
-  options.safety.slew_limit_n_per_s = 1e6;
-  return options;
-}
-
 TEST_F(OpenHapticsDeviceTest, FollowsTheSdksSetUpAndShutdownOrder) {
   RecordingClient client;
   {

@@ -67,6 +67,75 @@ TEST_F(OpenHapticsFaultTest, SchedulerErrorEndsTheLoopAndIsReported) {
   EXPECT_EQ(device.last_error().code, static_cast<unsigned>(HD_COMM_ERROR));
 }
 
+// A failed link loses the tick's command and the amplifiers keep the last force (the fake models
+// that): the failing tick itself must turn the force output off, since no later tick will come
+// to ramp it down and Stop() may be far away (or never called, by a viewer that did not look).
+TEST_F(OpenHapticsFaultTest, ASchedulerErrorTurnsTheForceOffOnTheFailingTick) {
+  OpenHapticsDevice device(Immediate());
+  RecordingClient client(Eigen::Vector3d(0.5, 0.0, 0.0));
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+  constexpr HDulong kFault = 10;
+  hdFakeInjectError(HD_COMM_ERROR, kFault);
+  hdFakeStep(30);  // the scheduler keeps ticking, with the callback gone
+  ASSERT_TRUE(device.servo_ended());
+  EXPECT_EQ(LoggedForce(kFault - 1)[0], 0.5);
+  for (HDulong tick = kFault; tick < 30; ++tick) {
+    EXPECT_EQ(LoggedForce(tick), (std::vector<double>{0.0, 0.0, 0.0})) << "tick " << tick;
+  }
+  EXPECT_EQ(hdIsEnabled(HD_FORCE_OUTPUT), HD_FALSE);
+  device.Stop();
+  EXPECT_EQ(device.last_error().code, static_cast<unsigned>(HD_COMM_ERROR));
+}
+
+// An uncalibrated device does not know where the stylus is: the client is not asked, the motors
+// stay off and the force zero; once the calibration is done (here an update the loop makes when
+// the stylus is in the inkwell), the motors come on and the force ramps in.
+TEST_F(OpenHapticsFaultTest, NoForceUntilTheDeviceIsCalibrated) {
+  hdFakeSetCalibration(HD_CALIBRATION_NEEDS_MANUAL_INPUT);
+  OpenHapticsDevice device(Immediate(0.01));  // a ramp-in of 10 ticks
+  RecordingClient client(Eigen::Vector3d(0.5, 0.0, 0.0));
+  ASSERT_EQ(device.Open(), DeviceStatus::kOk);
+  ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
+  hdFakeStep(20);
+  EXPECT_EQ(client.ticks(), 0u);
+  for (HDulong tick = 0; tick < 20; ++tick) {
+    EXPECT_EQ(LoggedForce(tick)[0], 0.0) << "tick " << tick;
+  }
+  EXPECT_EQ(hdIsEnabled(HD_FORCE_OUTPUT), HD_FALSE);
+  EXPECT_EQ(device.Calibration(), CalibrationStatus::kNeedsManualInput);
+  hdFakeSetCalibration(HD_CALIBRATION_NEEDS_UPDATE);  // the stylus went into the inkwell
+  hdFakeStep(20);
+  EXPECT_EQ(device.Calibration(), CalibrationStatus::kOk);
+  EXPECT_EQ(hdIsEnabled(HD_FORCE_OUTPUT), HD_TRUE);
+  EXPECT_NEAR(LoggedForce(20)[0], 0.05, 1e-12);  // a tenth of the force: the ramp's first tick
+  EXPECT_NEAR(LoggedForce(39)[0], 0.5, 1e-12);
+  device.Stop();  // the figures are complete from here
+  EXPECT_EQ(device.safety_counters().uncalibrated_ticks, 20);
+}
+
+// The HD API cannot tell a live session of this process from a handle a crash left behind; the
+// process-wide claim can: a second Open() of the device is refused, and the first session keeps
+// its device, its scheduler and its force.
+TEST_F(OpenHapticsFaultTest, ASecondSessionDoesNotTakeOverALiveDevice) {
+  OpenHapticsDevice first(Immediate());
+  RecordingClient client(Eigen::Vector3d(0.5, 0.0, 0.0));
+  ASSERT_EQ(first.Open(), DeviceStatus::kOk);
+  ASSERT_EQ(first.Start(client), DeviceStatus::kOk);
+  hdFakeStep(5);
+  OpenHapticsDevice second;
+  EXPECT_EQ(second.Open(), DeviceStatus::kAlreadyInUse);
+  EXPECT_EQ(second.last_error().code, static_cast<unsigned>(HD_DEVICE_ALREADY_INITIATED));
+  EXPECT_EQ(Count("hdDisableDevice"), 0);
+  EXPECT_EQ(Count("hdInitDevice"), 1);
+  hdFakeStep(5);
+  EXPECT_EQ(client.ticks(), 10u);
+  EXPECT_EQ(LoggedForce(9)[0], 0.5);
+  first.Stop();
+  first.Close();
+  EXPECT_EQ(second.Open(), DeviceStatus::kOk);  // released with the first session
+}
+
 TEST_F(OpenHapticsFaultTest, CalibrationStatesMapAndUpdatableOnesAreUpdated) {
   OpenHapticsDevice device;
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);

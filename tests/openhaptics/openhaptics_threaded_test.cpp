@@ -20,16 +20,21 @@ TEST_F(OpenHapticsThreadedTest, TicksOnTheSchedulerThreadAndStopsCleanly) {
   RecordingClient client(Eigen::Vector3d(0.2, 0.0, 0.0));
   ASSERT_EQ(device.Open(), DeviceStatus::kOk);
   ASSERT_EQ(device.Start(client), DeviceStatus::kOk);
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // Counted in ticks, not in sleeps: a loaded machine ticks fewer of them in any time.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (client.ticks() < 300 && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
   device.Stop();
   const std::uint64_t ticks = client.ticks();
-  EXPECT_GT(ticks, 0u);
+  ASSERT_GE(ticks, 300u);
   EXPECT_EQ(device.stats().ticks, ticks);
   EXPECT_TRUE(device.stats().paced);
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   EXPECT_EQ(client.ticks(), ticks);  // no tick after Stop()
-  // The stop's ramp ticks (0.2 N ramped in to 0.12 N at 0.3 s: two slew steps) run on the
-  // scheduler without the client; the scheduler may tick once more, empty, before it stops.
+  // The stop's ramp ticks (0.2 N ramped in to at least 0.12 N by tick 300: two slew steps of
+  // 0.1 N) run on the scheduler without the client; the scheduler may tick once more, empty,
+  // before it stops.
   EXPECT_EQ(device.safety_counters().ramp_down_ticks, 2);
   EXPECT_GE(hdFakeTickCount(), ticks + 2);
   std::vector<double> latched(3);

@@ -36,6 +36,9 @@ struct DeviceState {
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
   std::uint32_t buttons = 0;  ///< bit i: button i pressed
   bool fault = false;         ///< the device reported a force error on the previous command
+  /// False while the device is not calibrated: its position is not to be trusted, the client is
+  /// not asked and the force stays zero (it ramps in once the device is calibrated).
+  bool calibrated = true;
 };
 
 /// What a servo client asks the device to push with. `valid` false or an `age_s` beyond the
@@ -54,6 +57,7 @@ enum class DeviceStatus {
   kNeedsCalibration,  ///< calibrate before forces are enabled
   kCommError,         ///< the link to the device or its scheduler failed
   kInvalidState,      ///< an operation out of order (start before open, ...)
+  kRefused,           ///< a client whose tick may block (physics inside it) on a paced device
 };
 
 constexpr const char* ToString(DeviceStatus status) {
@@ -70,6 +74,8 @@ constexpr const char* ToString(DeviceStatus status) {
       return "communication error";
     case DeviceStatus::kInvalidState:
       return "operation out of order";
+    case DeviceStatus::kRefused:
+      return "refused: a paced device cannot wait for physics inside its servo tick";
   }
   return "unknown";
 }

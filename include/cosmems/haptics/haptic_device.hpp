@@ -32,7 +32,8 @@ class HapticDevice {
   DeviceStatus Open();
   /// The device's calibration (after Open()).
   CalibrationStatus Calibration();
-  /// Starts the servo loop with `client` (which must outlive Stop()); forces ramp in.
+  /// Starts the servo loop with `client` (which must outlive Stop()); forces ramp in. A paced
+  /// device refuses a client whose tick may block (ServoClient::BlocksTheTick): kRefused.
   DeviceStatus Start(ServoClient& client);
   /// Brings the force down to zero along the slew limit, then stops the loop; idempotent.
   void Stop() noexcept;

@@ -18,6 +18,9 @@ struct SafetyOptions {
   double ramp_in_s = 0.5;         ///< force scale 0 -> 1 after start and after every fault; <= 60
   double max_model_age_s = 0.01;  ///< an older force (stale physics) is replaced by zero; <= 1
   bool passivity_control = true;  ///< Hannaford & Ryu's observer and variable damper
+  /// Most energy the passivity observer banks [J]; 0: the force limit times the usable
+  /// workspace's diagonal, the most a passive world rendered within the limits could return.
+  double passivity_energy_limit_j = 0.0;
 
   /// Throws std::invalid_argument naming the field and its value.
   void Validate() const {
@@ -36,6 +39,8 @@ struct SafetyOptions {
     // An infinite age limit would render a stalled physics thread's last force for ever; a
     // model a second old is no longer a rendering of the hand's touch.
     require(max_model_age_s > 0.0 && max_model_age_s <= 1.0, "max_model_age_s", max_model_age_s);
+    require(std::isfinite(passivity_energy_limit_j) && passivity_energy_limit_j >= 0.0,
+            "passivity_energy_limit_j", passivity_energy_limit_j);
   }
 };
 
@@ -63,6 +68,7 @@ struct SafetyCounters {
   long passivity_activations = 0;  ///< ticks the passivity controller added damping
   long output_guards = 0;          ///< outputs the last guard replaced (none if the layer is right)
   long ramp_down_ticks = 0;        ///< ticks spent bringing the force to zero at a stop
+  long uncalibrated_ticks = 0;     ///< ticks the force was held at zero for want of calibration
   double max_force_n = 0.0;        ///< largest force commanded
 };
 
@@ -82,6 +88,12 @@ class SafetyLayer {
     limit_n_ = options.force_limit_n > 0.0 ? std::min(options.force_limit_n, specs.max_force_n)
                                            : device_limit;
     max_damping_ = specs.max_damping_ns_per_m;
+    // A workspace the device does not report leaves a unit of length: a desk device's reach is
+    // a few tenths of a metre, so the ceiling is then looser, never absent.
+    const double reach_m = (specs.workspace_max_m - specs.workspace_min_m).norm();
+    energy_limit_j_ = options.passivity_energy_limit_j > 0.0
+                          ? options.passivity_energy_limit_j
+                          : limit_n_ * (reach_m > 0.0 && std::isfinite(reach_m) ? reach_m : 1.0);
     // Servo rates from 100 Hz to 10 kHz: the haptic range, and a stop's ramp a countable number
     // of ticks.
     if (!(limit_n_ > 0.0 && std::isfinite(limit_n_)) ||
@@ -98,6 +110,8 @@ class SafetyLayer {
   double force_limit() const { return limit_n_; }
   double slew_per_tick() const { return options_.slew_limit_n_per_s * period_s_; }
   double period() const { return period_s_; }
+  /// The passivity observer's ceiling [J] (SafetyOptions::passivity_energy_limit_j).
+  double passivity_energy_limit() const { return energy_limit_j_; }
   const SafetyCounters& counters() const { return counters_; }
   const Eigen::Vector3d& last_output() const { return output_; }
   /// The most ticks RampDown() needs to bring any output to zero.
@@ -139,6 +153,11 @@ class SafetyLayer {
       fault = Count(counters_.non_finite_forces);
     }
     if (state.fault) fault = Count(counters_.device_faults);
+    if (!state.calibrated) {
+      // Not a fault of the loop: the device cannot yet say where the hand is.
+      ++counters_.uncalibrated_ticks;
+      fault = true;
+    }
     if (fault) {
       ramp_ = 0.0;
       energy_j_ = 0.0;
@@ -225,15 +244,17 @@ class SafetyLayer {
                                     : Eigen::Vector3d::Zero();
     }
     output_ = next;
-    energy_j_ -= output_.dot(velocity) * period_s_;
+    // The ceiling: minutes of dissipative contact would otherwise bank credit that a later
+    // active model could return to the hand unopposed.
+    energy_j_ = std::min(energy_j_ - output_.dot(velocity) * period_s_, energy_limit_j_);
     counters_.max_force_n = std::max(counters_.max_force_n, output_.norm());
     return output_;
   }
 
   // Time-domain passivity (Hannaford & Ryu 2002): the observer sums the energy the hand has put
-  // into the virtual world, -f.v dt, over the forces sent. When the force about to be sent would
-  // turn it negative, the world has produced energy, and a damper -alpha v for this tick takes it
-  // back (alpha bounded by the device's damping). The damped force is clamped again.
+  // into the virtual world, -f.v dt, over the forces sent (up to the ceiling). When the force
+  // about to be sent would turn it negative, the world has produced energy, and a damper -alpha v
+  // for this tick takes it back (alpha bounded by the device's damping), clamped again.
   void Dissipate(const Eigen::Vector3d& v, Eigen::Vector3d& target) {
     const double v2 = v.squaredNorm();
     if (v2 == 0.0) return;
@@ -249,6 +270,7 @@ class SafetyLayer {
   double period_s_;
   double limit_n_ = 0.0;
   double max_damping_ = 0.0;
+  double energy_limit_j_ = 0.0;
   Eigen::Vector3d output_ = Eigen::Vector3d::Zero();
   double ramp_ = 0.0;
   double energy_j_ = 0.0;

@@ -14,6 +14,9 @@ class ServoClient {
   /// Called by HapticDevice::Start() before the first tick: device time starts again at 0, so
   /// whatever the client rendered before must not be taken for fresh.
   virtual void OnStart() noexcept {}
+  /// True when Tick() does work of unbounded time (a physics step inside the tick): no watchdog
+  /// can see such a tick run late, so a paced device refuses the client (HapticDevice::Start).
+  virtual bool BlocksTheTick() const noexcept { return false; }
 };
 
 }  // namespace cosmems

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "cosmems/haptics/haptic_device.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
@@ -52,6 +53,13 @@ class HapticSession {
   void Start();
   /// Stops the servo loop, then the physics thread; idempotent. The device stays open.
   void Stop();
+
+  /// What the person at the device must be told now, empty when nothing: the servo loop ended
+  /// on its own (the device's scheduler failed; its motors are off, Stop() cleans up), or the
+  /// forces are held off until the device is calibrated. Any thread but the servo thread.
+  std::string DeviceAlert();
+  /// The first of DeviceAlert()'s: empty unless the servo loop ended on its own.
+  std::string ServoFault() const;
 
   HapticDevice& device() { return *opened_.device; }
   const OpenedDevice& opened() const { return opened_; }

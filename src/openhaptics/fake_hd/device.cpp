@@ -12,12 +12,15 @@ bool BadHandle(World& w, HHD handle) {
   return true;
 }
 
-// What the motors do with the frame's command: the device refuses a tick with an injected
-// error, outputs nothing while forces are off, clamps to its peak force when asked, and with the
-// software limit raises an error rather than push harder than its peak.
+// What the motors do with the frame's command: the device refuses a tick with an injected force
+// error, keeps the force it had when the link fails (an amplifier holds its last command until
+// told otherwise), outputs nothing while forces are off, clamps to its peak force when asked, and
+// with the software limit raises an error rather than push harder than its peak.
 void LatchForce(World& w) {
+  const Injected injected = RaiseInjected(w);
+  if (injected == Injected::kLinkError) return;
   w.latched_n = Vec3{};
-  if (RaiseInjected(w) || !w.force_output || !w.started) return;
+  if (injected == Injected::kForceError || !w.force_output || !w.started) return;
   Vec3 force = w.commanded_n;
   const double norm = std::sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]);
   const double peak = w.specs.max_force_n;
@@ -58,6 +61,7 @@ void SetCapability(HDenum cap, bool on, const char* call) {
     return;
   }
   *flag = on;
+  if (cap == HD_FORCE_OUTPUT && !on) w.latched_n = Vec3{};  // motors off: no force from now on
 }
 
 }  // namespace

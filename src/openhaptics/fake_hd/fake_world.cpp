@@ -78,13 +78,21 @@ void SampleStylus(World& w, double time_s) {
   w.sampled = true;
 }
 
-bool RaiseInjected(World& w) {
+Injected RaiseInjected(World& w) {
   const HDulong tick = w.ticks - 1;
-  bool raised = false;
+  Injected raised = Injected::kNone;
   auto due = [&](const InjectedError& e) {
     if (e.tick != tick) return false;
     Raise(w, e.code);
-    raised = true;
+    // A failed link (hduIsSchedulerError's codes) outranks a refused force: nothing arrived.
+    const bool link = e.code == HD_COMM_ERROR || e.code == HD_COMM_CONFIG_ERROR ||
+                      e.code == HD_TIMER_ERROR || e.code == HD_INVALID_PRIORITY ||
+                      e.code == HD_SCHEDULER_FULL;
+    if (link) {
+      raised = Injected::kLinkError;
+    } else if (raised == Injected::kNone) {
+      raised = Injected::kForceError;
+    }
     return true;
   };
   w.injected.erase(std::remove_if(w.injected.begin(), w.injected.end(), due), w.injected.end());

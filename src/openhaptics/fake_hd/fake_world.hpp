@@ -117,8 +117,14 @@ void Record(World& w, const char* call);
 bool NoDevice(World& w);
 /// Samples the stylus for the tick about to run (or at initialisation).
 void SampleStylus(World& w, double time_s);
-/// Raises the errors injected for the running tick; true when there were any.
-bool RaiseInjected(World& w);
+/// What the injected errors of a tick did to the link.
+enum class Injected {
+  kNone,
+  kForceError,  ///< the device refused this tick's force: it outputs zero
+  kLinkError,   ///< the link failed: the command never arrived, the motors keep the last force
+};
+/// Raises the errors injected for the running tick and says what they did.
+Injected RaiseInjected(World& w);
 
 /// Runs one scheduler tick on the calling thread. Takes the lock itself.
 void RunTick();

@@ -66,16 +66,19 @@ void hdFakeSetButtons(HDint buttons);
  * NEEDS_MANUAL_INPUT stays until this hook changes it (the user has to act). */
 void hdFakeSetCalibration(HDenum status);
 
-/* Raises `code` at tick `tick`: at that tick's outer hdEndFrame (the device then outputs zero
- * force), or at the tick's end when no frame ended. Force errors (HD_WARM_MOTORS, ...) leave the
- * scheduler running; the caller decides what a scheduler error (HD_COMM_ERROR, ...) means. */
+/* Raises `code` at tick `tick`: at that tick's outer hdEndFrame, or at the tick's end when no
+ * frame ended. A force error (HD_WARM_MOTORS, ...) refuses the frame's force: the device outputs
+ * zero. A scheduler error (HD_COMM_ERROR, HD_TIMER_ERROR, ...) loses the frame's command: the
+ * motors keep the force they had until force output is disabled or the scheduler stops. Either
+ * leaves the scheduler running; the caller decides what a scheduler error means. */
 void hdFakeInjectError(HDerror code, HDulong tick);
 /* The next `count` hdInitDevice calls fail with `code` (e.g. HD_DEVICE_ALREADY_INITIATED). */
 void hdFakeFailInit(HDerror code, HDint count);
 /* Without a device, every hdInitDevice fails with HD_DEVICE_FAULT, as when none answers. */
 void hdFakeSetDevicePresent(HDboolean present);
 
-/* The force the device outputs now [N], latched at the last outer hdEndFrame. */
+/* The force the device outputs now [N], latched at the last outer hdEndFrame; zero from the
+ * moment force output is disabled. */
 void hdFakeLatchedForce(HDdouble force_n[3]);
 /* The force output during each tick of the first 65536 ticks since the reset [N]. */
 HDulong hdFakeForceLogSize(void);
