@@ -157,10 +157,11 @@ void BindModels(py::module_& m) {
 
   py::class_<ModelStepper>(
       m, "Stepper",
-      "A time loop on a Model. d, v and a are the integrator's own vectors, without a copy and "
-      "writable, in the model's internal units (times Model.dof_scale: m and rad; v and a also "
-      "over units['time_s'] and its square). The integrator keeps two buffers of each and swaps "
-      "them every step, so read them again after a step.")
+      "A time loop on a Model. d, v and a are views, without a copy and writable, of the "
+      "stepper's state in the model's internal units (times Model.dof_scale: m and rad; v and a "
+      "also over units['time_s'] and its square). Their buffers stay in place for the stepper's "
+      "life and every step updates them, so an array kept across steps shows the current "
+      "state; a write through it is where the next step starts.")
       .def(
           "initialize",
           [](ModelStepper& stepper, const Eigen::VectorXd& d0, const Eigen::VectorXd& v0,
@@ -178,13 +179,19 @@ void BindModels(py::module_& m) {
           "One step to the load f (N, N m) at t + dt. A float64 array is read without a copy.")
       .def_property_readonly(
           "d", [](ModelStepper& stepper) -> Eigen::VectorXd& { return stepper.displacement(); },
-          py::return_value_policy::reference_internal)
+          py::return_value_policy::reference_internal,
+          "The displacement, internal units (times dof_scale: m, rad): a writable view that "
+          "stays current across steps.")
       .def_property_readonly(
           "v", [](ModelStepper& stepper) -> Eigen::VectorXd& { return stepper.velocity(); },
-          py::return_value_policy::reference_internal)
+          py::return_value_policy::reference_internal,
+          "The velocity, internal units (times dof_scale / time_s: m/s, rad/s): a writable view "
+          "that stays current across steps.")
       .def_property_readonly(
           "a", [](ModelStepper& stepper) -> Eigen::VectorXd& { return stepper.acceleration(); },
-          py::return_value_policy::reference_internal)
+          py::return_value_policy::reference_internal,
+          "The acceleration, internal units (times dof_scale / time_s^2: m/s^2, rad/s^2): a "
+          "writable view that stays current across steps.")
       .def_property_readonly("time", &ModelStepper::time_s, "s")
       .def_property_readonly("time_step", &ModelStepper::time_step_s, "s");
 }

@@ -32,6 +32,7 @@ ModelStepper::ModelStepper(std::shared_ptr<const SceneModel> model, double time_
     throw std::invalid_argument(std::string("the step's matrix cannot be factored: ") +
                                 ToString(integrator_.info()));
   }
+  CopyState();
 }
 
 Status ModelStepper::Initialize(const Eigen::VectorXd& d0_si, const Eigen::VectorXd& v0_si,
@@ -42,15 +43,24 @@ Status ModelStepper::Initialize(const Eigen::VectorXd& d0_si, const Eigen::Vecto
   const Eigen::VectorXd& scale = model_->dof_scale();
   const Eigen::VectorXd d0 = d0_si.cwiseQuotient(scale);
   const Eigen::VectorXd v0 = v0_si.cwiseQuotient(scale) * model_->units().time;
-  return integrator_.Initialize(d0, v0, f_);
+  const Status status = integrator_.Initialize(d0, v0, f_);
+  if (status == Status::kOk) CopyState();
+  return status;
 }
 
 Status ModelStepper::Step(const Eigen::Ref<const Eigen::VectorXd>& f_next_si) {
   // The state may have been written through its arrays since the last step.
-  integrator_.SetState(integrator_.displacement(), integrator_.velocity(),
-                       integrator_.acceleration(), f_);
+  integrator_.SetState(d_, v_, a_, f_);
   LoadFromSi(f_next_si);
-  return integrator_.Step(f_);
+  const Status status = integrator_.Step(f_);
+  if (status == Status::kOk) CopyState();
+  return status;
+}
+
+void ModelStepper::CopyState() {
+  d_ = integrator_.displacement();
+  v_ = integrator_.velocity();
+  a_ = integrator_.acceleration();
 }
 
 void ModelStepper::LoadFromSi(const Eigen::Ref<const Eigen::VectorXd>& f_si) {

@@ -13,10 +13,12 @@ namespace cosmems::python {
 
 /// A linear Newmark-family integrator on a SceneModel, for a time loop written in Python: M a +
 /// C v + K d = f with C = alpha M + beta K. Loads come in SI and are converted into a buffer of
-/// its own; the state d, v, a is the integrator's own vectors (internal units), which Python
-/// sees as arrays without a copy and may write. Because a write there bypasses the integrator,
-/// every step first re-derives the integrator's prepared products from the state (one pass over
-/// the vectors, no allocation).
+/// its own. The state d, v, a (internal units) is three vectors of this object's own, which
+/// Python sees as arrays without a copy and may write: they stay where they are for the
+/// stepper's life and hold the current state after every call, so an array kept across steps
+/// stays current (the integrator's own vectors swap with its scratch ones every step). Every
+/// step copies them into the integrator, re-deriving its prepared products (a write there
+/// bypasses it), and copies its new state back: passes over the vectors, no allocation.
 class ModelStepper {
  public:
   /// `damping_si`: alpha [1/s] and beta [s]. Throws std::invalid_argument for a bad time step.
@@ -29,18 +31,17 @@ class ModelStepper {
   /// One step to the load f_next [N, N m]; allocates nothing. On failure the state stays.
   Status Step(const Eigen::Ref<const Eigen::VectorXd>& f_next_si);
 
-  /// The integrator's own state vectors (internal units: S d is in m and rad).
-  Eigen::VectorXd& displacement() { return Own(integrator_.displacement()); }
-  Eigen::VectorXd& velocity() { return Own(integrator_.velocity()); }
-  Eigen::VectorXd& acceleration() { return Own(integrator_.acceleration()); }
+  /// The state (internal units: S d is in m and rad), in buffers that never move.
+  Eigen::VectorXd& displacement() { return d_; }
+  Eigen::VectorXd& velocity() { return v_; }
+  Eigen::VectorXd& acceleration() { return a_; }
   double time_s() const { return integrator_.time() * model_->units().time; }
   double time_step_s() const { return integrator_.time_step() * model_->units().time; }
   const SceneModel& model() const { return *model_; }
 
  private:
-  // The integrator hands out const references to vectors it owns and this object owns it:
-  // writing through them is writing this object's state.
-  static Eigen::VectorXd& Own(const Eigen::VectorXd& x) { return const_cast<Eigen::VectorXd&>(x); }
+  // d_, v_, a_ from the integrator's state.
+  void CopyState();
   // f [internal] from f [SI] into f_.
   void LoadFromSi(const Eigen::Ref<const Eigen::VectorXd>& f_si);
 
@@ -48,6 +49,7 @@ class ModelStepper {
   LinearNewmarkIntegrator integrator_;
   Eigen::VectorXd load_factor_;  ///< S / (F L), per degree of freedom
   Eigen::VectorXd f_;            ///< the last load, internal units
+  Eigen::VectorXd d_, v_, a_;    ///< the state Python sees, internal units
 };
 
 }  // namespace cosmems::python

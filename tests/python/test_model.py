@@ -131,6 +131,36 @@ def test_the_state_arrays_are_the_integrators_own():
     assert other.d == pytest.approx(moved, rel=1e-12, abs=1e-12 * np.abs(moved).max())
 
 
+def test_state_arrays_kept_across_steps_stay_current():
+    # d, v and a taken once, before any step, against the same steppers' state read afresh and
+    # against a second stepper that takes the same steps (it moves, so a stale array would
+    # differ): an odd and an even number of steps, as a buffer swapped each step would alternate.
+    model = cantilever()
+    f = np.zeros(model.size)
+    f[tip_uy(model)] = -1e-7
+    zero = np.zeros(model.size)
+    stepper, reference = model.newmark(1e-7), model.newmark(1e-7)
+    stepper.initialize(zero, zero, zero)
+    reference.initialize(zero, zero, zero)
+    d, v, a = stepper.d, stepper.v, stepper.a
+    for _ in range(3):
+        before = d.copy()
+        stepper.step(f)
+        reference.step(f)
+        assert not np.array_equal(d, before)
+        for kept, now, other in ((d, stepper.d, reference.d), (v, stepper.v, reference.v),
+                                 (a, stepper.a, reference.a)):
+            assert np.array_equal(kept, now) and np.array_equal(kept, other)
+    # A write through the kept array after a step is the state the next step starts from.
+    k = tip_uy(model)
+    d[k] += 1e-3
+    reference.d[k] += 1e-3
+    assert stepper.d[k] == reference.d[k]
+    stepper.step(f)
+    reference.step(f)
+    assert np.array_equal(d, reference.d)
+
+
 def test_average_acceleration_conserves_the_energy():
     # The trapezoidal rule conserves E = v^T M v / 2 + d^T K d / 2 of a free, undamped linear
     # system exactly; 1e-10 bounds the round-off of 2000 steps.

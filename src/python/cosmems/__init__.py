@@ -9,8 +9,8 @@ Scenes and their results are those of the ``cosmems`` command line (doc/python.m
     summary = cosmems.sweep(scene, vary={"structure.length": "100e-6:300e-6:5"})
 
 Underneath, ``scene.model()`` gives the linear model: K and the mass terms as scipy.sparse
-matrices in SI, static and modal solves, and a Newmark stepper whose state arrays are the
-integrator's own vectors.
+matrices in SI, static and modal solves, and a Newmark stepper whose state arrays are views,
+writable and current across steps, of the stepper's own vectors.
 """
 
 import csv
