@@ -81,17 +81,21 @@ case "${1:-}" in
     if [ $# -eq 0 ]; then ls "$build_dir/bench"; exit 0; fi
     name=$1; shift
     exec "$build_dir/bench/$name" "$@" ;;
-  sanitize)
-    # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer, float-to-integer
-    # overflow included, with assertions on: -O1 and no NDEBUG, so the library's and Eigen's
-    # asserts run; line tables only (-g1), which is all a report's stack needs and compiles in
-    # 60 % of -g's time. Built by clang, which compiles these units in about half of GCC's time
-    # at the same flags (doc/testing.md), so the suite also meets a second compiler; the main
-    # build stays GCC's. Left out, each for its reason: the
-    # malloc-counting tests (the sanitizer owns malloc), the ThreadSanitizer tests (one
-    # sanitizer a build; they run in `test`), the viewer's headless run (Mesa's software
-    # renderer, not ours, under LeakSanitizer) and the sweep under mpirun (OpenMPI's start-up,
-    # likewise).
+  sanitize | fuzz)
+    # One clang build in build/asan serves both. `sanitize`: the whole test suite under
+    # AddressSanitizer + UndefinedBehaviorSanitizer, float-to-integer overflow included, with
+    # assertions on: -O1 and no NDEBUG, so the library's and Eigen's asserts run; line tables
+    # only (-g1), which is all a report's stack needs and compiles in 60 % of -g's time. Built by
+    # clang, which compiles these units in about half of GCC's time at the same flags
+    # (doc/testing.md), so the suite also meets a second compiler; the main build stays GCC's.
+    # Left out, each for its reason: the malloc-counting tests (the sanitizer owns malloc), the
+    # ThreadSanitizer tests (one sanitizer a build; they run in `test`), the viewer's headless
+    # run (Mesa's software renderer, not ours, under LeakSanitizer) and the sweep under mpirun
+    # (OpenMPI's start-up, likewise). `fuzz [SECONDS]`: each fuzzer for SECONDS, the scene reader
+    # and --set up to the built model, and the CSV trajectory reader up to the forces a scripted
+    # device sends. The libraries they exercise carry libFuzzer's coverage instrumentation in the
+    # same build (tests/fuzz), so the fuzzers link what the sanitized suite already compiled
+    # instead of a build of their own (doc/testing.md, "What CI costs").
     asan_dir=${COSMEMS_ASAN_DIR:-build/asan}
     # A folder another compiler configured starts afresh: CMake would reset the cache for the new
     # compiler and drop the options below with it.
@@ -102,41 +106,33 @@ case "${1:-}" in
     cmake -S . -B "$asan_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
       -DCOSMEMS_SANITIZE=address,undefined,float-cast-overflow \
-      -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
-    cmake --build "$asan_dir" -j"$jobs" --target cosmems_unit_tests
-    exec ctest --test-dir "$asan_dir" --output-on-failure -j"$jobs" -L unit ;;
-  fuzz)
-    # Each fuzzer for SECONDS: the scene reader and --set up to the built model, and the CSV
-    # trajectory reader up to the forces a scripted device sends. -O1 and line tables only, the
-    # flags fuzzing is usually built with: a report's stack needs no more, and the build (the
-    # scene library and the core's compiled analyses, all instrumented) is most of this step.
+      -DCOSMEMS_BUILD_FUZZERS=ON -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
+    if [ "$1" = sanitize ]; then
+      cmake --build "$asan_dir" -j"$jobs" --target cosmems_unit_tests scene_fuzzer trajectory_fuzzer
+      exec ctest --test-dir "$asan_dir" --output-on-failure -j"$jobs" -L unit
+    fi
     seconds=${2:-60}
-    fuzz_dir=${COSMEMS_FUZZ_DIR:-build/fuzz}
-    cmake -S . -B "$fuzz_dir" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
-      -DCOSMEMS_SANITIZE=address,undefined,fuzzer-no-link -DCOSMEMS_BUILD_FUZZERS=ON \
-      -DCOSMEMS_BUILD_TESTS=OFF -DCOSMEMS_BUILD_BENCHMARKS=OFF -DCOSMEMS_BUILD_EXAMPLES=OFF >/dev/null
-    cmake --build "$fuzz_dir" -j"$jobs" --target scene_fuzzer trajectory_fuzzer
+    cmake --build "$asan_dir" -j"$jobs" --target scene_fuzzer trajectory_fuzzer
     # New inputs go to the first (scratch) corpus; the kept inputs seed it. A failing input is
-    # written to $fuzz_dir/<fuzzer>-crash-* and belongs in the fuzzer's regressions folder, which
+    # written to $asan_dir/<fuzzer>-crash-* and belongs in the fuzzer's regressions folder, which
     # the ordinary suite replays.
     for fuzzer in scene trajectory; do
       case $fuzzer in
         scene) kept=(src/scene/scenes tests/fuzz/seeds tests/fuzz/regressions); dict=(-dict=tests/fuzz/scene.dict) ;;
         trajectory) kept=(tests/fuzz/trajectory_seeds tests/fuzz/trajectory_regressions); dict=() ;;
       esac
-      mkdir -p "$fuzz_dir/corpus-$fuzzer"
+      mkdir -p "$asan_dir/corpus-$fuzzer"
       # libFuzzer reports every new input it finds: that goes to a log, and only a failure's
       # report and the final figures are printed.
-      if ! "$fuzz_dir/tests/fuzz/${fuzzer}_fuzzer" -max_total_time="$seconds" -timeout=10 \
+      if ! "$asan_dir/tests/fuzz/${fuzzer}_fuzzer" -max_total_time="$seconds" -timeout=10 \
         -rss_limit_mb=2048 -print_final_stats=1 "${dict[@]}" \
-        -artifact_prefix="$fuzz_dir/$fuzzer-" "$fuzz_dir/corpus-$fuzzer" "${kept[@]}" \
-        > "$fuzz_dir/$fuzzer.log" 2>&1; then
-        tail -n 80 "$fuzz_dir/$fuzzer.log" >&2
+        -artifact_prefix="$asan_dir/$fuzzer-" "$asan_dir/corpus-$fuzzer" "${kept[@]}" \
+        > "$asan_dir/$fuzzer.log" 2>&1; then
+        tail -n 80 "$asan_dir/$fuzzer.log" >&2
         exit 1
       fi
       echo "$fuzzer fuzzer:"
-      grep -E '^(Done|stat::)' "$fuzz_dir/$fuzzer.log"
+      grep -E '^(Done|stat::)' "$asan_dir/$fuzzer.log"
     done ;;
   report)
     shift
