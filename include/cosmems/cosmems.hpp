@@ -79,6 +79,7 @@
 #include "cosmems/structure/member_axes.hpp"
 #include "cosmems/structure/reverse_cuthill_mckee.hpp"
 #include "cosmems/structure/serpentine.hpp"
+#include "cosmems/structure/straight_beam.hpp"
 #include "cosmems/structure/structure_description.hpp"
 #include "cosmems/structure/torsional_micromirror.hpp"
 #include "cosmems/surface/contact_state.hpp"

@@ -52,6 +52,10 @@ FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen:
                                            const std::vector<FrameElementForce*>& forces) {
   const FrameModel::ElementVector u = model.LocalDisplacement(d, e);
   FrameModel::ElementVector s = model.LocalStiffness(e) * u;
+  // A residual tension pulls each end toward the other: -N at the first end's u_x, +N at the
+  // second's (LocalStiffness already holds its geometric share, N G_0 u).
+  s[0] -= model.ElementAxialLoad(e);
+  s[6] += model.ElementAxialLoad(e);
   for (const FrameElementForce* force : forces) s += force->LocalForce(d, e);
   if (!distributed.isZero(0.0)) {
     const Eigen::Vector3d q =

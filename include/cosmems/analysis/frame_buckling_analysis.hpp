@@ -47,8 +47,9 @@ inline FrameBucklingResult SolveFrameBuckling(const FrameModel& model, const Fra
     const FrameModel::ElementVector end =
         internal::ElementEndForces(model, d, e, loads.distributed);
     // The mean of the two ends' tension: exact for point loads, the element's average under a
-    // distributed axial load.
-    const double n = 0.5 * (end[6] - end[0]);
+    // distributed axial load. A member's residual force is not the loads' and is not scaled
+    // with them: it stays in K as its N G_0.
+    const double n = 0.5 * (end[6] - end[0]) - model.ElementAxialLoad(e);
     out.axial_force_n[e] = n * model.units().force;
     largest = std::max(largest, -out.axial_force_n[e]);
     magnitude = std::max(magnitude, std::abs(out.axial_force_n[e]));

@@ -3,8 +3,10 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
+#include "cosmems/beam/element_interpolation.hpp"
 #include "cosmems/beam/frame_element.hpp"
 #include "cosmems/core/units.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
@@ -25,7 +27,11 @@ namespace cosmems {
 /// or body couples (a planar device's in-plane ux, uz, ry and out-of-plane uy, rx, rz; a chain
 /// along x's four fields), and each group is numbered on its own, carrier by carrier: the band
 /// is that of the widest group, as a beam's field-by-field numbering makes it (a netlist that
-/// is a straight chain has the chain's band).
+/// is a straight chain has the chain's band). A planar description numbers u_x, u_y and r_z
+/// alone: a chain along x then has a planar beam's unknowns and band.
+/// A member's residual axial force N (StructureMember::axial_load) adds N G_0 to its elements'
+/// stiffness and -N G_(j+1) to their mass terms M_2j, the power series of the prestressed
+/// element's dynamic stiffness (the highest term keeps M_2j alone).
 /// The couplings between a member's fields that the forces on a frame may add to its linear
 /// elements': none, or those of axial stretching, which ties each member's axial field to its
 /// two bendings (FrameStretchingForce). The numbering keeps apart only what never couples.
@@ -45,6 +51,11 @@ class FrameModel {
         units_(InternalUnits(description)),
         bases_(description.series_order),
         mesh_(description) {
+    int first = 0;
+    for (const StructureMember& member : description.members) {
+      first_element_.push_back(first);
+      first += member.elements;
+    }
     for (const FrameMesh::Element& e : mesh_.elements) {
       const StructureMember& member = description.members[e.member];
       elements_.emplace_back(
@@ -65,19 +76,24 @@ class FrameModel {
   int FreeDofCount() const { return free_; }
   int SeriesOrder() const { return bases_.order(); }
 
-  /// K_L, and the mass terms M_2j (bodies in M_0 only), D(w) = K - sum_j w^(2j+2) M_2j.
+  /// K_L (with the members' prestress N G_0), and the mass terms M_2j (bodies in M_0 only; with
+  /// the prestress's -N G_(j+1)), D(w) = K - sum_j w^(2j+2) M_2j.
   const SymmetricBandMatrix& Stiffness() const { return stiffness_; }
   const SymmetricBandMatrix& Mass(int j) const { return mass_.at(j); }
 
   /// Reduced index of a carrier's degree of freedom d (NodalDof order), or -1 when anchored.
   int CarrierDof(int carrier, int d) const { return dof_[6 * carrier + d]; }
 
-  /// The element's K_L in its own axes (internal units), kept from the assembly for the
+  /// The element's K_L + N G_0 in its own axes (internal units), kept from the assembly for the
   /// recovery of end forces.
   const Element::Matrix& LocalStiffness(int e) const { return local_stiffness_[e]; }
 
   /// The element's local displacements from its carriers' (a's six, then b's): u = T q.
   const Transform& ElementTransform(int e) const { return transform_[e]; }
+  /// The residual axial force of the element's member (internal units, tension > 0).
+  double ElementAxialLoad(int e) const {
+    return description_.members[mesh_.elements[e].member].axial_load / units_.force;
+  }
   /// Reduced indices of the element's carriers' degrees of freedom, -1 where anchored.
   const std::array<int, 12>& ElementDofs(int e) const { return element_dofs_[e]; }
 
@@ -94,6 +110,43 @@ class FrameModel {
     for (int k = 0; k < 6; ++k)
       q[k] = CarrierDof(carrier, k) >= 0 ? d[CarrierDof(carrier, k)] : 0.0;
     return q;
+  }
+
+  /// The element of `member` holding the point a fraction s (0 at its first node, 1 at its
+  /// second) along it, and the point's local coordinate xi in [0, 1] there.
+  std::pair<int, double> Locate(int member, double s) const {
+    const int count = description_.members.at(member).elements;
+    const double at = std::clamp(s, 0.0, 1.0) * count;
+    const int k = std::min(static_cast<int>(at), count - 1);
+    return {first_element_[member] + k, at - k};
+  }
+
+  /// The motion (u, theta; global axes, internal units) of the point a fraction s along
+  /// `member` in the reduced state d: u_x and the twist linear along its element, each bending
+  /// the Hermite cubic of its end values and slopes (the static shape, as BeamField recovers a
+  /// beam's).
+  Motion MemberMotion(const Eigen::VectorXd& d, int member, double s) const {
+    const auto [e, xi] = Locate(member, s);
+    const ElementVector q = LocalDisplacement(d, e);
+    const double l = elements_[e].properties().length;
+    const ShapeValues v = ShapeValues::At(bases_, xi);
+    Eigen::Vector3d u, theta;
+    u.x() = v.bar[0] * q[0] + v.bar[1] * q[6];
+    theta.x() = v.bar[0] * q[3] + v.bar[1] * q[9];
+    // x-y plane: (u_y, r_z) with r_z = du_y/dx; x-z plane: (u_z, r_y) with r_y = -du_z/dx.
+    const double y[4] = {q[1], l * q[5], q[7], l * q[11]};
+    const double z[4] = {q[2], -l * q[4], q[8], -l * q[10]};
+    u.y() = u.z() = theta.y() = theta.z() = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      u.y() += v.bending[a] * y[a];
+      u.z() += v.bending[a] * z[a];
+      theta.z() += v.bending_slope[a] * y[a] / l;
+      theta.y() -= v.bending_slope[a] * z[a] / l;
+    }
+    const Eigen::Matrix3d& axes = mesh_.elements[e].axes;
+    Motion out;
+    out << axes.transpose() * u, axes.transpose() * theta;
+    return out;
   }
 
   /// A mesh node's motion (u, theta; global axes, internal units) in the reduced state d.
@@ -207,6 +260,12 @@ class FrameModel {
     for (int d = 0; d < 6; ++d) group_[d] = root(d);
   }
 
+  // Whether the model has direction d at all: a planar one only u_x, u_y and r_z.
+  bool Moves(int d) const {
+    return !description_.planar || d == static_cast<int>(NodalDof::kUx) ||
+           d == static_cast<int>(NodalDof::kUy) || d == static_cast<int>(NodalDof::kRz);
+  }
+
   // Carriers in reverse Cuthill-McKee order over the elements' connections, each group of
   // directions on its own (Group).
   void Number() {
@@ -239,7 +298,7 @@ class FrameModel {
     for (int g = 0; g < 6; ++g) {
       for (int c : order) {
         for (int d = 0; d < 6; ++d) {
-          if (group_[d] == g && !mesh_.carriers[c].anchor[d]) dof_[6 * c + d] = free_++;
+          if (group_[d] == g && Moves(d) && !mesh_.carriers[c].anchor[d]) dof_[6 * c + d] = free_++;
         }
       }
     }
@@ -280,9 +339,15 @@ class FrameModel {
     stiffness_ = SymmetricBandMatrix(free_, bandwidth);
     mass_.assign(order + 1, SymmetricBandMatrix(free_, bandwidth));
     for (int e = 0; e < ElementCount(); ++e) {
+      const double n = ElementAxialLoad(e);
       local_stiffness_.push_back(elements_[e].Stiffness(bases_));
+      if (n != 0.0) local_stiffness_.back() += n * elements_[e].Geometric(bases_, 0);
       AddElementMatrix(e, local_stiffness_.back(), stiffness_);
-      for (int j = 0; j <= order; ++j) AddElementMatrix(e, elements_[e].Mass(bases_, j), mass_[j]);
+      for (int j = 0; j <= order; ++j) {
+        Element::Matrix m = elements_[e].Mass(bases_, j);
+        if (n != 0.0 && j < order) m -= n * elements_[e].Geometric(bases_, j + 1);
+        AddElementMatrix(e, m, mass_[j]);
+      }
     }
     for (std::size_t b = 0; b < mesh_.body_carrier.size(); ++b) {
       const int carrier = mesh_.body_carrier[b];
@@ -303,7 +368,8 @@ class FrameModel {
   FrameBases bases_;
   FrameMesh mesh_;
   std::vector<Element> elements_;
-  std::array<int, 6> group_{};  ///< each direction's group: the root direction of its group
+  std::vector<int> first_element_;  ///< each member's first element (members mesh in order)
+  std::array<int, 6> group_{};      ///< each direction's group: the root direction of its group
   std::vector<int> dof_;
   int free_ = 0;
   std::vector<std::array<int, 12>> element_dofs_;

@@ -43,6 +43,9 @@ struct StructureMember {
   RectangularSection section;
   int elements = 1;
   Eigen::Vector3d thickness_direction = Eigen::Vector3d::UnitY();
+  /// N, a residual axial force in the straight member (tension > 0), e.g. from fabrication
+  /// stress: it enters every analysis through the member's geometric stiffness.
+  double axial_load = 0.0;
 };
 
 /// A rigid block (plate, shuttle, proof mass, mirror) with its edges along x, y and z; the nodes
@@ -64,6 +67,10 @@ struct StructureDescription {
   std::vector<StructureMember> members;
   std::vector<StructureBody> bodies;
   int series_order = 1;  ///< power-series terms of every member: 0 = Hermite + consistent mass
+  /// The motion in the x-y plane alone (u_x, u_y, r_z: along the members and toward the
+  /// substrate), the other three directions held: a planar beam's model. Every node lies in
+  /// the plane z = 0 and every member's thickness along y.
+  bool planar = false;
 
   /// The index of the node called `name`, or -1.
   int FindNode(const std::string& name) const {
@@ -107,6 +114,7 @@ struct StructureDescription {
       }
     }
     for (std::size_t m = 0; m < members.size(); ++m) ValidateMember(m);
+    if (planar) ValidatePlanar();
     std::vector<int> owner(nodes.size(), -1);
     for (std::size_t b = 0; b < bodies.size(); ++b) ValidateBody(b, owner);
   }
@@ -128,6 +136,7 @@ struct StructureDescription {
                                              "\" are at the same position)");
     }
     member.material.Validate(where + ".material");
+    RequireFinite(where + ".axial_load", member.axial_load);
     member.section.Validate(where);
     if (member.elements < 1) {
       throw FieldError(where + ".elements", "must be at least 1");
@@ -142,6 +151,26 @@ struct StructureDescription {
                            "\"; a member not parallel to the substrate names its thickness "
                            "direction");
     }
+  }
+
+  void ValidatePlanar() const {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (nodes[i].position.z() != 0.0) {
+        throw FieldError("model.dimension",
+                         "2 (planar) needs every node at z = 0; structure.nodes[" +
+                             std::to_string(i) + "] is not");
+      }
+    }
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const Eigen::Vector3d& t = members[m].thickness_direction;
+      if (t.x() != 0.0 || t.z() != 0.0) {
+        throw FieldError("model.dimension",
+                         "2 (planar) needs every member's thickness along y; "
+                         "structure.beams[" +
+                             std::to_string(m) + "]'s is not");
+      }
+    }
+    if (!bodies.empty()) throw FieldError("model.dimension", "2 (planar) takes no bodies");
   }
 
   void ValidateBody(std::size_t b, std::vector<int>& owner) const {
