@@ -8,7 +8,7 @@
 #include <system_error>
 #include <utility>
 
-#include "output_file_error.hpp"
+#include "cli_errors.hpp"
 
 namespace cosmems::internal {
 namespace {

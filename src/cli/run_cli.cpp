@@ -11,13 +11,12 @@
 #include <stdexcept>
 
 #include "analysis_runner.hpp"
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/netlist_scene.hpp"
 #include "cosmems/scene/printable_text.hpp"
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
-#include "output_file_error.hpp"
 #include "sweep_runner.hpp"
 
 namespace cosmems {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "sweep_outputs.hpp"
 
 namespace cosmems::internal {

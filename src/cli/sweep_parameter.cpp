@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "csv_file.hpp"
 #include "normal_quantile.hpp"
 

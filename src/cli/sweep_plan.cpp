@@ -4,7 +4,7 @@
 #include <numeric>
 #include <utility>
 
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 
 namespace cosmems::internal {
 namespace {

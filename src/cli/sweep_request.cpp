@@ -7,7 +7,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "cosmems/scene/embedded_scenes.hpp"
 #include "cosmems/scene/scene_error.hpp"
 #include "cosmems/scene/scene_loader.hpp"

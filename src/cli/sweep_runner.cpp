@@ -13,7 +13,7 @@
 
 #include "analysis_runner.hpp"
 #include "atomic_file.hpp"
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "sweep_condition.hpp"
 #include "sweep_plan.hpp"

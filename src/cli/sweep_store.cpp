@@ -13,9 +13,8 @@
 #include <system_error>
 
 #include "atomic_file.hpp"
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "csv_file.hpp"
-#include "output_file_error.hpp"
 #include "sweep_outputs.hpp"
 
 namespace cosmems::internal {

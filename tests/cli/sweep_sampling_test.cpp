@@ -7,7 +7,7 @@
 #include <set>
 #include <vector>
 
-#include "cli_input_error.hpp"
+#include "cli_errors.hpp"
 #include "normal_quantile.hpp"
 #include "sobol_sequence.hpp"
 #include "sweep_condition.hpp"
