@@ -18,6 +18,7 @@
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "sweep_runner.hpp"
+#include "text_format.hpp"
 
 namespace cosmems {
 namespace {
@@ -73,17 +74,33 @@ int Run(const RunRequest& request, std::ostream& out) {
   return ok ? kSuccess : kNumericalFailure;
 }
 
-// `cosmems netlist`: a parametric device's scene as the frame netlist its generator makes.
+// What a frame scene cannot say yet of a beam's netlist: a reason naming the key, or "".
+std::string UnprintableBeam(const Scene& scene) {
+  if (scene.model.dimension == 2) return "model.dimension = 2: a frame scene is 3-D";
+  if (scene.structure.axial_load != 0.0) {
+    return "structure.axial_load = " + internal::Significant(scene.structure.axial_load) +
+           ": a frame scene's beams take no residual axial load";
+  }
+  if (!scene.loads.midspan_force.isZero(0.0)) {
+    return "loads.midspan_force: the netlist has no node at midspan";
+  }
+  return "";
+}
+
+// `cosmems netlist`: a generated structure's scene (a cantilever, a bridge or a parametric
+// device) as the frame netlist its generator makes.
 int PrintNetlist(const RunRequest& request, std::ostream& out) {
   std::vector<SceneOverride> overrides;
   for (const std::string& assignment : request.overrides) {
     overrides.push_back(SceneOverride::Parse(assignment));
   }
   const Scene scene = LoadScene(request.scene, overrides);
-  if (!IsDevice(scene.structure.kind) || scene.structure.kind == StructureKind::kFrame) {
-    throw internal::CliInputError(request.scene + ": structure.kind = \"" +
-                                  ToString(scene.structure.kind) +
-                                  "\" is no parametric device (it has no netlist to print)");
+  if (scene.structure.kind == StructureKind::kFrame) {
+    throw internal::CliInputError(request.scene +
+                                  ": structure.kind = \"frame\" is a netlist already");
+  }
+  if (const std::string reason = UnprintableBeam(scene); !reason.empty()) {
+    throw internal::CliInputError(request.scene + ": " + reason);
   }
   out << NetlistScene(scene);
   return kSuccess;
@@ -141,7 +158,9 @@ int RunCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
 
   RunRequest netlist_request;
   CLI::App* netlist = app.add_subcommand(
-      "netlist", "Print the netlist a parametric device's scene makes, as a frame scene to edit");
+      "netlist",
+      "Print the netlist a cantilever's, a bridge's or a parametric device's scene makes, as a "
+      "frame scene to edit");
   netlist->add_option("SCENE", netlist_request.scene, "A .toml scene file or an embedded scene")
       ->required();
   Repeatable(netlist->add_option("--set", netlist_request.overrides, "Override a key, as for run")

@@ -40,9 +40,20 @@ StructureDescription MakeStructureDescription(const Scene& scene) {
     case StructureKind::kAccelerometer:
       return Generate(s.accelerometer, scene, &Accelerometer);
     case StructureKind::kCantilever:
-    case StructureKind::kBridge:
+    case StructureKind::kBridge: {
+      StraightBeamDesign beam;
+      beam.bridge = s.kind == StructureKind::kBridge;
+      beam.length = s.length;
+      beam.material = EffectiveMaterial(scene.material);
+      beam.section = RectangularSection{s.width, s.thickness};
+      beam.elements = scene.model.elements;
+      beam.series_order = scene.model.series_order;
+      beam.axial_load = s.axial_load;
+      beam.planar = scene.model.dimension == 2;
+      return StraightBeam(beam);
+    }
     case StructureKind::kFrame:
-      break;  // a frame's netlist is written out, below (a beam is no device)
+      break;  // a frame's netlist is written out, below
   }
   StructureDescription out;
   out.series_order = scene.model.series_order;

@@ -74,6 +74,11 @@ std::string NetlistScene(const Scene& scene) {
   out << "\n[model]\nelements = " << scene.model.elements
       << "\nseries_order = " << scene.model.series_order << "\n";
   out << "\n[loads]\ndistributed = " << Vector(scene.loads.distributed) << "\n";
+  // A cantilever's tip load acts at its netlist's node "tip".
+  if (!scene.loads.tip_force.isZero(0.0) || !scene.loads.tip_moment.isZero(0.0)) {
+    out << "\n[[loads.points]]\nnode = \"tip\"\nforce = " << Vector(scene.loads.tip_force)
+        << "\nmoment = " << Vector(scene.loads.tip_moment) << "\n";
+  }
   for (const ScenePointLoad& p : scene.loads.points) {
     out << "\n[[loads.points]]\n"
         << (p.node ? "node = " + Quoted(*p.node) : "body = " + Quoted(*p.body))

@@ -319,5 +319,55 @@ TEST(DeviceCliTest, ADeviceTooLargeForMemoryIsInvalidInputBeforeItIsBuilt) {
   EXPECT_NO_THROW(LoadScene("folded-flexure", {{"model.elements", "62500"}}));
 }
 
+// A cantilever and a bridge are one-member netlists their generator makes (StraightBeam):
+// `cosmems netlist` prints it, and run as a frame scene it answers as the beam scene does, the
+// tip's displacement and rotation and the frequencies to round-off (measured 5e-12 and 2e-12;
+// 1e-10 asserted: the same matrices, numbered in another order and so factorised with other
+// rounding). What a frame scene
+// cannot say yet (planar, a residual axial load, a load between its nodes) is refused naming
+// the key.
+TEST(DeviceCliTest, ACantileverAndABridgeAreTheNetlistsTheirGeneratorMakes) {
+  auto netlist_json = [](const std::vector<std::string>& args) {
+    std::vector<std::string> print = {"netlist"};
+    print.insert(print.end(), args.begin(), args.end());
+    const testing::CliOutcome netlist = testing::Cli(print);
+    EXPECT_EQ(netlist.code, 0) << netlist.err;
+    ExpectContains(netlist.out, "name = \"tip\"");
+    const testing::TempDirectory dir(args[0]);
+    testing::WriteFile(dir.path() / "netlist.toml", netlist.out);
+    return RunJson({(dir.path() / "netlist.toml").string()});
+  };
+  const std::vector<std::string> loaded = {"cantilever", "--set",
+                                           "loads.tip_force=[1e-7, -1e-7, 2e-8]", "--set",
+                                           "loads.tip_moment=[1e-12, 0.0, 3e-12]"};
+  const nlohmann::json beam = RunJson(loaded);
+  const nlohmann::json frame = netlist_json(loaded);
+  const double u = std::abs(beam["tip_displacement"][1].get<double>());
+  const double r = std::abs(beam["tip_rotation"][2].get<double>());
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_NEAR(frame["nodes"]["tip"]["displacement"][k].get<double>(),
+                beam["tip_displacement"][k].get<double>(), 1e-10 * u);
+    EXPECT_NEAR(frame["nodes"]["tip"]["rotation"][k].get<double>(),
+                beam["tip_rotation"][k].get<double>(), 1e-10 * r);
+  }
+  for (const std::vector<std::string>& modal :
+       {std::vector<std::string>{"cantilever-modal"},
+        std::vector<std::string>{"microbridge", "--set", "analysis.type=\"modal\"", "--set",
+                                 "loads.midspan_force=[0.0, 0.0, 0.0]", "--set",
+                                 "model.series_order=2"}}) {
+    const nlohmann::json b = RunJson(modal);
+    const nlohmann::json f = netlist_json(modal);
+    ASSERT_EQ(f["frequencies_hz"].size(), b["frequencies_hz"].size()) << modal[0];
+    for (std::size_t i = 0; i < b["frequencies_hz"].size(); ++i) {
+      const double want = b["frequencies_hz"][i];
+      EXPECT_NEAR(f["frequencies_hz"][i].get<double>(), want, 1e-10 * want) << modal[0];
+    }
+  }
+  ExpectContains(InvalidInput({"netlist", "cantilever-pullin"}), "model.dimension = 2");
+  ExpectContains(InvalidInput({"netlist", "cantilever", "--set", "structure.axial_load=1e-5"}),
+                 "structure.axial_load = 1e-05");
+  ExpectContains(InvalidInput({"netlist", "microbridge"}), "loads.midspan_force");
+}
+
 }  // namespace
 }  // namespace cosmems

@@ -192,7 +192,7 @@ TEST(FrameCliTest, TheFoldedFlexureMovesByItsDesignsStiffnessAndPrintsItsNetlist
                  "structure.shuttle_width = 1e-05: too narrow for the beams");
   ExpectContains(InvalidInput({"run", "folded-flexure", "--set", "structure.length=1e-4"}),
                  "only a cantilever or a bridge takes it");
-  ExpectContains(InvalidInput({"netlist", "micromirror"}), "is no parametric device");
+  ExpectContains(InvalidInput({"netlist", "micromirror"}), "is a netlist already");
 }
 
 // The folded flexure's shuttle under a step force F rings about F / k, overshooting to 2 F / k,

@@ -8,6 +8,7 @@
 #include "cosmems/analysis/frame_record_point.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/structure/frame_model.hpp"
+#include "cosmems/structure/straight_beam.hpp"
 #include "cosmems/structure/structure_description.hpp"
 #include "cosmems/time/voltage_drive.hpp"
 
@@ -17,8 +18,10 @@ namespace cosmems {
 
 /// A frame's nodes, beams and bodies with their names resolved to indices (each beam's
 /// thickness, element count and material default to structure.thickness, model.elements and
-/// [material]; a body's density is its material's), or the netlist a parametric device's
-/// generator makes of its design parameters. Validated (StructureDescription::Validate).
+/// [material]; a body's density is its material's), or the netlist a generator makes of its
+/// design parameters: a parametric device's, or a cantilever's or a bridge's one member
+/// (StraightBeam: nodes "root" and "tip", planar with model.dimension = 2, with its residual
+/// axial load). Validated (StructureDescription::Validate).
 StructureDescription MakeStructureDescription(const Scene& scene);
 
 /// The couplings the scene's theory adds to the frame's linear members: a device with
