@@ -1,11 +1,10 @@
 #pragma once
 
 #include <stdexcept>
-#include <string>
 
 namespace cosmems::internal {
 
-/// The two ways a command fails besides a scene's own errors, told apart by the exit status.
+// The two ways a command fails besides a scene's own errors, told apart by the exit status.
 
 /// Invalid command-line input outside the scene itself, such as an --out directory that
 /// cannot be written: the user's input at fault, exit 2. what() is one line naming the option
