@@ -18,7 +18,6 @@
 #include "cosmems/scene/scene_key_reference.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "sweep_runner.hpp"
-#include "text_format.hpp"
 
 namespace cosmems {
 namespace {
@@ -74,19 +73,6 @@ int Run(const RunRequest& request, std::ostream& out) {
   return ok ? kSuccess : kNumericalFailure;
 }
 
-// What a frame scene cannot say yet of a beam's netlist: a reason naming the key, or "".
-std::string UnprintableBeam(const Scene& scene) {
-  if (scene.model.dimension == 2) return "model.dimension = 2: a frame scene is 3-D";
-  if (scene.structure.axial_load != 0.0) {
-    return "structure.axial_load = " + internal::Significant(scene.structure.axial_load) +
-           ": a frame scene's beams take no residual axial load";
-  }
-  if (!scene.loads.midspan_force.isZero(0.0)) {
-    return "loads.midspan_force: the netlist has no node at midspan";
-  }
-  return "";
-}
-
 // `cosmems netlist`: a generated structure's scene (a cantilever, a bridge or a parametric
 // device) as the frame netlist its generator makes.
 int PrintNetlist(const RunRequest& request, std::ostream& out) {
@@ -98,9 +84,6 @@ int PrintNetlist(const RunRequest& request, std::ostream& out) {
   if (scene.structure.kind == StructureKind::kFrame) {
     throw internal::CliInputError(request.scene +
                                   ": structure.kind = \"frame\" is a netlist already");
-  }
-  if (const std::string reason = UnprintableBeam(scene); !reason.empty()) {
-    throw internal::CliInputError(request.scene + ": " + reason);
   }
   out << NetlistScene(scene);
   return kSuccess;

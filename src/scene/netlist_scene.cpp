@@ -1,6 +1,7 @@
 #include "cosmems/scene/netlist_scene.hpp"
 
 #include <sstream>
+#include <stdexcept>
 
 #include "cosmems/scene/frame_conversion.hpp"
 #include "toml_format.hpp"
@@ -34,9 +35,27 @@ std::string SupportText(const AnchorMask& anchor) {
   return "[" + list + "]";
 }
 
+// What a frame scene cannot say yet of a beam's netlist: a reason naming the key, or "".
+std::string Unprintable(const Scene& scene) {
+  if (scene.model.dimension == 2) return "model.dimension = 2: a frame scene is 3-D";
+  if (scene.structure.axial_load != 0.0) {
+    std::ostringstream reason;
+    reason << "structure.axial_load = " << scene.structure.axial_load
+           << ": a frame scene's beams take no residual axial load";
+    return reason.str();
+  }
+  if (!scene.loads.midspan_force.isZero(0.0)) {
+    return "loads.midspan_force: the netlist has no node at midspan";
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string NetlistScene(const Scene& scene) {
+  if (const std::string reason = Unprintable(scene); !reason.empty()) {
+    throw std::invalid_argument(scene.source + ": " + reason);
+  }
   const StructureDescription s = MakeStructureDescription(scene);
   std::ostringstream out;
   out << "# " << scene.source << " (structure.kind = \"" << ToString(scene.structure.kind)
