@@ -5,13 +5,40 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cosmems {
 
+namespace {
+
+// A point load between a member's nodes: the element holding it and its consistent loads there
+// (the element's axes, internal units).
+std::pair<int, ElementLoads> MemberPointLoads(const FrameModel& model, const FramePointLoad& load) {
+  const UnitSystem& units = model.units();
+  const auto [e, xi] = model.Locate(load.member, load.at);
+  const Eigen::Matrix3d& axes = model.mesh().elements[e].axes;
+  return {e,
+          PointElementLoads(model.bases(), model.elements()[e].properties().length, xi,
+                            axes * load.force / units.force, axes * load.moment / units.Moment())};
+}
+
+bool OnMember(const FrameModel& model, const FramePointLoad& load) {
+  return load.node < 0 && load.body < 0 && load.member >= 0 &&
+         load.member < static_cast<int>(model.description().members.size());
+}
+
+}  // namespace
+
 Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase& loads) {
   const UnitSystem& units = model.units();
   Eigen::VectorXd f = Eigen::VectorXd::Zero(model.FreeDofCount());
+  auto scatter = [&](int e, const ElementLoads& local) {
+    const ElementLoads carried = model.ElementTransform(e).transpose() * local;
+    for (int a = 0; a < 12; ++a) {
+      if (model.ElementDofs(e)[a] >= 0) f[model.ElementDofs(e)[a]] += carried[a];
+    }
+  };
   for (std::size_t i = 0; i < loads.points.size(); ++i) {
     const FramePointLoad& load = loads.points[i];
     const std::string where = "loads.points[" + std::to_string(i) + "]";
@@ -25,8 +52,15 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
       model.AddNodeLoad(load.node, l, f);
     } else if (load.body >= 0 && load.body < static_cast<int>(model.description().bodies.size())) {
       model.AddCarrierLoad(model.mesh().body_carrier[load.body], l, f);
+    } else if (OnMember(model, load)) {
+      if (!(load.at >= 0.0 && load.at <= 1.0)) {
+        throw std::invalid_argument(where + ".at = " + FormatValue(load.at) +
+                                    ": not on the member (0 ... 1)");
+      }
+      const auto [e, local] = MemberPointLoads(model, load);
+      scatter(e, local);
     } else {
-      throw std::invalid_argument(where + ": names no node or body of the structure");
+      throw std::invalid_argument(where + ": names no node, body or member of the structure");
     }
   }
   for (int k = 0; k < 3; ++k) RequireFinite("loads.distributed", loads.distributed[k]);
@@ -34,12 +68,7 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
     for (int e = 0; e < model.ElementCount(); ++e) {
       const FrameMesh::Element& element = model.mesh().elements[e];
       const Eigen::Vector3d q = element.axes * loads.distributed / units.ForcePerLength();
-      const ElementLoads local =
-          UniformElementLoads(model.bases(), model.elements()[e].properties().length, q);
-      const ElementLoads carried = model.ElementTransform(e).transpose() * local;
-      for (int a = 0; a < 12; ++a) {
-        if (model.ElementDofs(e)[a] >= 0) f[model.ElementDofs(e)[a]] += carried[a];
-      }
+      scatter(e, UniformElementLoads(model.bases(), model.elements()[e].properties().length, q));
     }
   }
   return f;
@@ -48,7 +77,7 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
 namespace internal {
 
 FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen::VectorXd& d, int e,
-                                           const Eigen::Vector3d& distributed,
+                                           const FrameLoadCase& loads,
                                            const std::vector<FrameElementForce*>& forces) {
   const FrameModel::ElementVector u = model.LocalDisplacement(d, e);
   FrameModel::ElementVector s = model.LocalStiffness(e) * u;
@@ -57,10 +86,15 @@ FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen:
   s[0] -= model.ElementAxialLoad(e);
   s[6] += model.ElementAxialLoad(e);
   for (const FrameElementForce* force : forces) s += force->LocalForce(d, e);
-  if (!distributed.isZero(0.0)) {
+  if (!loads.distributed.isZero(0.0)) {
     const Eigen::Vector3d q =
-        model.mesh().elements[e].axes * distributed / model.units().ForcePerLength();
+        model.mesh().elements[e].axes * loads.distributed / model.units().ForcePerLength();
     s -= UniformElementLoads(model.bases(), model.elements()[e].properties().length, q);
+  }
+  for (const FramePointLoad& load : loads.points) {
+    if (!OnMember(model, load)) continue;
+    const auto [at, local] = MemberPointLoads(model, load);
+    if (at == e) s -= local;
   }
   return s;
 }
@@ -116,7 +150,7 @@ void RecoverFrameStatic(const FrameModel& model, const FrameLoadCase& loads,
   // Element end forces: stresses, axial forces, and what the anchored nodes receive.
   std::vector<FrameModel::Motion> resisted(s.nodes.size(), FrameModel::Motion::Zero());
   for (int e = 0; e < model.ElementCount(); ++e) {
-    const FrameModel::ElementVector end = ElementEndForces(model, d, e, loads.distributed, forces);
+    const FrameModel::ElementVector end = ElementEndForces(model, d, e, loads, forces);
     const ElementProperties& p = model.elements()[e].properties();
     for (int k = 0; k < 2; ++k) {
       const double axial = (k == 0 ? -end[0] : end[6]) * units.force;

@@ -4,8 +4,6 @@
 #include <string>
 
 #include "buckling_report.hpp"
-#include "frame_buckling_report.hpp"
-#include "frame_modal_report.hpp"
 #include "frame_pullin_report.hpp"
 #include "frame_release_report.hpp"
 #include "frame_static_report.hpp"
@@ -23,11 +21,9 @@ std::unique_ptr<AnalysisReport> RunAnalysis(const Scene& scene) {
   if (IsDevice(scene.structure.kind)) {
     if (scene.analysis.type == AnalysisType::kHaptic) return HapticReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kPullin) return FramePullInReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kModal) return FrameModalReport::Run(scene);
+    if (scene.analysis.type == AnalysisType::kModal) return ModalReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kTransient) return TransientReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kBuckling) {
-      return FrameBucklingReport::Run(scene);
-    }
+    if (scene.analysis.type == AnalysisType::kBuckling) return BucklingReport::Run(scene);
     if (scene.analysis.type == AnalysisType::kRelease) {
       return FrameReleaseReport::Run(scene);
     }

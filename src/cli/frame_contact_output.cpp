@@ -16,12 +16,16 @@ FrameContactResults FrameContactResults::Of(const FrameSubstrateContact& contact
   for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
     out.bodies_stuck.push_back(contact.BodyStuck(static_cast<int>(b)));
   }
+  if (out.HasLengths()) {
+    out.contact.contact_length_m = out.members[0].contact_length_m;
+    out.contact.detached_length_m = out.members[0].detached_length_m;
+  }
   return out;
 }
 
 void AddFrameContact(const StructureDescription& structure, const FrameContactResults& results,
                      nlohmann::ordered_json& json) {
-  json["contact"] = ContactJson(results.contact, false);
+  json["contact"] = ContactJson(results.contact, results.HasLengths());
   nlohmann::ordered_json members = nlohmann::ordered_json::array();
   for (std::size_t m = 0; m < results.members.size(); ++m) {
     const ContactSummary& member = results.members[m];
@@ -40,7 +44,7 @@ void AddFrameContact(const StructureDescription& structure, const FrameContactRe
 
 void PrintFrameContact(const StructureDescription& structure, const FrameContactResults& results,
                        std::ostream& out) {
-  PrintContact(out, results.contact, false);
+  PrintContact(out, results.contact, results.HasLengths());
   for (std::size_t m = 0; m < results.members.size(); ++m) {
     const ContactSummary& member = results.members[m];
     if (!member.InContact()) continue;

@@ -18,13 +18,18 @@ struct FrameContactResults {
   std::vector<ContactSummary> members;
   std::vector<bool> bodies_stuck;
 
-  /// The contact's state at its last committed (converged) step.
+  /// The contact's state at its last committed (converged) step; a structure of one member
+  /// has that member's contact and detached lengths, as a beam.
   static FrameContactResults Of(const FrameSubstrateContact& contact,
                                 const StructureDescription& structure);
+
+  /// Whether `contact` has lengths: a structure of one member (a beam); a device's are null.
+  bool HasLengths() const { return members.size() == 1; }
 };
 
-/// contact (without lengths), members [{nodes, stuck, shape, detached_length_m,
-/// contact_length_m}], and `stuck` in each entry of json["bodies"], which must be there.
+/// contact (its lengths null unless HasLengths()), members [{nodes, stuck, shape,
+/// detached_length_m, contact_length_m}], and `stuck` in each entry of json["bodies"], which must
+/// be there.
 void AddFrameContact(const StructureDescription& structure, const FrameContactResults& results,
                      nlohmann::ordered_json& json);
 

@@ -63,8 +63,13 @@ void FrameReleaseReport::AddResults(nlohmann::ordered_json& json) const {
   const ContactSummary& c = results_.contact.contact;
   json["stuck"] = c.Stuck();
   json["shape"] = ToString(c.shape);
-  json["detached_length_m"] = nullptr;
-  json["contact_length_m"] = nullptr;
+  if (results_.contact.HasLengths()) {
+    json["detached_length_m"] = c.detached_length_m;
+    json["contact_length_m"] = c.contact_length_m;
+  } else {
+    json["detached_length_m"] = nullptr;
+    json["contact_length_m"] = nullptr;
+  }
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (std::size_t n = 0; n < results_.nodes.size(); ++n) {
     nodes[structure_.nodes[n].name] = MotionJson(results_.nodes[n]);

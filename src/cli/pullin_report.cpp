@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/pullin_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"

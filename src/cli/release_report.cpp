@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "contact_report.hpp"
+#include "cosmems/analysis/beam_field.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"

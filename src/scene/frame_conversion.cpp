@@ -82,6 +82,11 @@ StructureDescription MakeStructureDescription(const Scene& scene) {
   return out;
 }
 
+bool IsStraightBeam(const Scene& scene) {
+  return scene.structure.kind == StructureKind::kCantilever ||
+         scene.structure.kind == StructureKind::kBridge;
+}
+
 FrameCouplings MakeFrameCouplings(const Scene& scene) {
   return scene.model.theory == Theory::kStretching ? FrameCouplings::kStretching
                                                    : FrameCouplings::kLinear;
@@ -96,6 +101,22 @@ FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& 
     load.force = p.force;
     load.moment = p.moment;
     out.points.push_back(load);
+  }
+  // A beam's loads: the tip's at its node "tip", the midspan force halfway along its member.
+  const SceneLoads& beam = scene.loads;
+  if (!beam.tip_force.isZero(0.0) || !beam.tip_moment.isZero(0.0)) {
+    FramePointLoad tip;
+    tip.node = structure.FindNode("tip");
+    tip.force = beam.tip_force;
+    tip.moment = beam.tip_moment;
+    out.points.push_back(tip);
+  }
+  if (!beam.midspan_force.isZero(0.0)) {
+    FramePointLoad midspan;
+    midspan.member = 0;
+    midspan.at = 0.5;
+    midspan.force = beam.midspan_force;
+    out.points.push_back(midspan);
   }
   out.distributed = scene.loads.distributed;
   return out;

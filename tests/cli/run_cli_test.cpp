@@ -276,7 +276,7 @@ TEST(RunCliTest, ModalOutWritesModesAndNormalisedShapes) {
 
   const std::vector<std::string> modes = ReadLines(dir.path() / "modes.csv");
   ASSERT_EQ(modes.size(), 1u + 4u);
-  EXPECT_EQ(modes[0], "mode,frequency_hz,kind");
+  EXPECT_EQ(modes[0], "mode,frequency_hz,kind,ux,uy,uz,rx,ry,rz");
   EXPECT_EQ(modes[1].rfind("1,", 0), 0u);
   EXPECT_NE(modes[1].find(",bending_y"), std::string::npos);
 

@@ -198,6 +198,75 @@ TEST(StraightBeamTest, AResidualCompressionLowersTheThrustThatBuckles) {
   EXPECT_NEAR(result.critical_load_n, euler + n0, 1e-6 * euler);
 }
 
+// A force between nodes (FramePointLoad on a member) loads the element holding it by its
+// consistent nodal forces, as the beam's AssembleLoads: a bridge pressed at midspan across seven
+// elements (the load inside the fourth) deflects at every node as the closed form
+// w = P x^2 (3L - 4x) / (48 EI) for x <= L/2 (Hermite elements are exact at their nodes: 1e-10),
+// and a two-element bridge pressed a quarter along has the closed form's reactions,
+// R = 27/32 P, 5/32 P and end moments 9/64 P L, 3/64 P L (1e-12: exact at the nodes).
+TEST(StraightBeamTest, AForceBetweenNodesLoadsTheElementHoldingIt) {
+  const double p = -2e-6;
+  const double l = kReferenceLength;
+  FrameLoadCase midspan;
+  FramePointLoad load;
+  load.member = 0;
+  load.at = 0.5;
+  load.force = {0.0, p, 0.0};
+  midspan.points.push_back(load);
+
+  const FrameModel bridge(StraightBeam(ChainDesign(true, 7, 1, false)));
+  const FrameStaticSolution s = SolveFrameStatic(bridge, midspan);
+  ASSERT_EQ(s.status, Status::kOk);
+  const double largest = p * l * l * l / (192 * test::Eiz());
+  for (int k = 0; k <= 3; ++k) {
+    const double x = k * l / 7;
+    const double want = p * x * x * (3 * l - 4 * x) / (48 * test::Eiz());
+    const double got = bridge.MemberMotion(s.displacement, 0, k / 7.0)[1] * bridge.units().length;
+    EXPECT_NEAR(got, want, 1e-10 * std::abs(largest)) << "node " << k;
+  }
+
+  // Two elements, the force a quarter along the span, inside the first: the reactions come from
+  // the first element's end forces less its share of the load, and from the second's.
+  FrameLoadCase quarter = midspan;
+  quarter.points[0].at = 0.25;
+  const FrameModel two(StraightBeam(ChainDesign(true, 2, 1, false)));
+  const FrameStaticSolution r = SolveFrameStatic(two, quarter);
+  ASSERT_EQ(r.status, Status::kOk);
+  ASSERT_EQ(r.reactions.size(), 2u);
+  const double pl = std::abs(p) * l;
+  EXPECT_NEAR(r.reactions[0].force.y(), -27.0 / 32 * p, 1e-12 * std::abs(p));
+  EXPECT_NEAR(r.reactions[1].force.y(), -5.0 / 32 * p, 1e-12 * std::abs(p));
+  EXPECT_NEAR(std::abs(r.reactions[0].moment.z()), 9.0 / 64 * pl, 1e-12 * pl);
+  EXPECT_NEAR(std::abs(r.reactions[1].moment.z()), 3.0 / 64 * pl, 1e-12 * pl);
+
+  FramePointLoad outside = load;
+  outside.at = 1.5;
+  EXPECT_THROW(AssembleFrameLoads(bridge, {{outside}, Eigen::Vector3d::Zero()}),
+               std::invalid_argument);
+}
+
+// Euler buckling of the member itself (SolveMemberBuckling, a beam scene's buckling): a
+// cantilever's pi^2 EI / (4 L^2) and a bridge's 4 pi^2 EI / L^2 whatever residual force the
+// member holds (the total thrust it carries), equal to the beam's SolveBuckling to round-off
+// (1e-9: two eigen-solves of the same pencil in different orders) and to the closed form within
+// the 40-element chain's 1e-6.
+TEST(StraightBeamTest, AMemberBucklesAtEulersLoadWhateverItsResidualForce) {
+  for (bool bridge : {false, true}) {
+    const double euler =
+        (bridge ? 4.0 : 0.25) * kPi * kPi * test::Eiz() / (kReferenceLength * kReferenceLength);
+    for (double residual : {0.0, -0.3 * euler, 2.0 * euler}) {
+      const StraightBeamDesign d = ChainDesign(bridge, 40, 1, true, residual);
+      const FrameBucklingResult chain = SolveMemberBuckling(FrameModel(StraightBeam(d)), 0);
+      ASSERT_EQ(chain.status, Status::kOk);
+      EXPECT_NEAR(chain.critical_load_n, euler, 1e-6 * euler) << bridge << " " << residual;
+      const BucklingResult beam = SolveBuckling(BeamModel<2>(ChainAsBeam(d)));
+      ASSERT_EQ(beam.status, Status::kOk);
+      EXPECT_NEAR(chain.critical_load_n, beam.modes[0].critical_load_n, 1e-9 * euler);
+      EXPECT_DOUBLE_EQ(chain.load_factor, chain.critical_load_n);
+    }
+  }
+}
+
 // A planar description out of its plane is refused naming model.dimension.
 TEST(StraightBeamTest, APlanarStructureOutOfItsPlaneIsRefused) {
   StructureDescription s = StraightBeam(ChainDesign(false, 4, 1, true));

@@ -48,11 +48,12 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
 
 namespace internal {
 
-// Each element's end forces in its own axes, K u + r(u) - f_q (internal units; r the shares of
-// the nonlinear forces given: stretching, a gap pressure): the reactions, the axial forces and
+// Each element's end forces in its own axes, K u + r(u) - f (internal units; r the shares of
+// the nonlinear forces given: stretching, a gap pressure; f the element's share of the loads: the
+// distributed load and the point loads between its ends): the reactions, the axial forces and
 // the stresses all come from them.
 FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen::VectorXd& d, int e,
-                                           const Eigen::Vector3d& distributed,
+                                           const FrameLoadCase& loads,
                                            const std::vector<FrameElementForce*>& forces = {});
 
 }  // namespace internal

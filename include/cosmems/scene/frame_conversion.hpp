@@ -24,11 +24,16 @@ namespace cosmems {
 /// axial load). Validated (StructureDescription::Validate).
 StructureDescription MakeStructureDescription(const Scene& scene);
 
+/// Whether the scene is a cantilever or a bridge: StraightBeam's one member, whose fields a
+/// report lists along its axis (x) and which buckles under an axial compression of its ends.
+bool IsStraightBeam(const Scene& scene);
+
 /// The couplings the scene's theory adds to the frame's linear members: a device with
 /// model.theory = "stretching" stretches every member as it bends.
 FrameCouplings MakeFrameCouplings(const Scene& scene);
 
-/// The scene's [[loads.points]] at their nodes or bodies, and loads.distributed on every member.
+/// The scene's [[loads.points]] at their nodes or bodies, a beam's tip loads at its node "tip" and
+/// its midspan force halfway along its member, and loads.distributed on every member.
 FrameLoadCase MakeFrameLoadCase(const Scene& scene, const StructureDescription& structure);
 
 /// The scene's [[effects.combs]] on their bodies, each as thick as its body, with its
