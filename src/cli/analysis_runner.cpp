@@ -17,21 +17,12 @@
 namespace cosmems::internal {
 
 std::unique_ptr<AnalysisReport> RunAnalysis(const Scene& scene) {
-  // A device runs every analysis.
-  if (IsDevice(scene.structure.kind)) {
-    if (scene.analysis.type == AnalysisType::kHaptic) return HapticReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kPullin) return FramePullInReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kModal) return ModalReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kTransient) return TransientReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kBuckling) return BucklingReport::Run(scene);
-    if (scene.analysis.type == AnalysisType::kRelease) {
-      return FrameReleaseReport::Run(scene);
-    }
-    return FrameStaticReport::Run(scene);
-  }
+  // Static, pull-in and release have a beam report and a device report.
+  const bool device = IsDevice(scene.structure.kind);
   switch (scene.analysis.type) {
     case AnalysisType::kStatic:
-      return StaticReport::Run(scene);
+      return device ? std::unique_ptr<AnalysisReport>(FrameStaticReport::Run(scene))
+                    : StaticReport::Run(scene);
     case AnalysisType::kModal:
       return ModalReport::Run(scene);
     case AnalysisType::kTransient:
@@ -39,9 +30,11 @@ std::unique_ptr<AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kBuckling:
       return BucklingReport::Run(scene);
     case AnalysisType::kPullin:
-      return PullInReport::Run(scene);
+      return device ? std::unique_ptr<AnalysisReport>(FramePullInReport::Run(scene))
+                    : PullInReport::Run(scene);
     case AnalysisType::kRelease:
-      return ReleaseReport::Run(scene);
+      return device ? std::unique_ptr<AnalysisReport>(FrameReleaseReport::Run(scene))
+                    : ReleaseReport::Run(scene);
     case AnalysisType::kHaptic:
       return HapticReport::Run(scene);
   }
