@@ -92,9 +92,9 @@ FrameModel::ElementVector ElementEndForces(const FrameModel& model, const Eigen:
     s -= UniformElementLoads(model.bases(), model.elements()[e].properties().length, q);
   }
   for (const FramePointLoad& load : loads.points) {
-    if (!OnMember(model, load)) continue;
-    const auto [at, local] = MemberPointLoads(model, load);
-    if (at == e) s -= local;
+    if (OnMember(model, load) && model.Locate(load.member, load.at).first == e) {
+      s -= MemberPointLoads(model, load).second;
+    }
   }
   return s;
 }
