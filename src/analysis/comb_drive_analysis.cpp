@@ -126,47 +126,46 @@ CombDriveSolution SolveLinearCombDrives(const FrameModel& model, const FrameLoad
   return out;
 }
 
-// The combs' pull and the electrodes' pressure as the one force that Newton's statics ramp with
-// the loads: both grow with V^2 from nothing. Held whole from the first iterate, a comb's force
-// leaves Newton far from the equilibrium of a structure its other forces stiffen or soften, and
-// a failed solve would read as an instability.
-class RampedTransducers final : public FrameElementForce {
+// The combs' pull as a force Newton's statics ramp with the loads and the pressures across the
+// gap: all grow with V^2 from nothing. Held whole from the first iterate, a comb's force leaves
+// Newton far from the equilibrium of a structure its other forces stiffen or soften, and a failed
+// solve would read as an instability. It acts on the bodies alone: no element carries a share.
+class RampedCombs final : public FrameElementForce {
  public:
-  RampedTransducers(CombDriveForce& combs, FrameElementForce* electrodes)
-      : combs_(combs), electrodes_(electrodes) {}
+  explicit RampedCombs(CombDriveForce& combs) : combs_(combs) {}
 
   bool Evaluate(const Eigen::VectorXd& d, Eigen::VectorXd& force, ForceTangent& tangent) override {
-    return combs_.Evaluate(d, force, tangent) &&
-           (electrodes_ == nullptr || electrodes_->Evaluate(d, force, tangent));
+    return combs_.Evaluate(d, force, tangent);
   }
-  FrameModel::ElementVector LocalForce(const Eigen::VectorXd& d, int e) const override {
-    return electrodes_ != nullptr ? electrodes_->LocalForce(d, e)
-                                  : FrameModel::ElementVector::Zero();
+  FrameModel::ElementVector LocalForce(const Eigen::VectorXd&, int) const override {
+    return FrameModel::ElementVector::Zero();
   }
 
  private:
   CombDriveForce& combs_;
-  FrameElementForce* electrodes_;
 };
 
 // The same under nonlinear forces (CombDriveForce beside `forces`, ramped with the loads and the
-// `electrodes`): Newton's statics, and the side instability as the lowest factor whose equilibrium
-// is lost or whose tangent K + dr/dd is not positive definite, bisected to 1e-10 of itself.
+// `ramped` pressures): Newton's statics, and the side instability as the lowest factor whose
+// equilibrium is lost or whose tangent K + dr/dd is not positive definite, bisected to 1e-10 of
+// itself.
 CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model, const FrameLoadCase& loads,
                                            const std::vector<CombDrive>& declared,
                                            const std::vector<FrameElementForce*>& forces,
-                                           FrameElementForce* electrodes) {
+                                           const std::vector<FrameElementForce*>& pressures) {
   CombDriveSolution out;
   CombDriveForce pull(model, ScaledCombs(declared));
-  RampedTransducers ramped(pull, electrodes);
+  RampedCombs combs(pull);
+  std::vector<FrameElementForce*> ramped = pressures;
+  ramped.push_back(&combs);
   std::vector<FrameElementForce*> all = forces;
-  all.push_back(&ramped);
+  all.insert(all.end(), ramped.begin(), ramped.end());
   // Each factor's Newton starts from the last stable state found (from rest at first): near
   // it, one load step instead of a ramp.
   NonlinearStaticOptions options;
   const auto solve = [&](double factor) {
     pull.SetVoltageFactor(factor);
-    return SolveFrameNonlinearStatic(model, forces, loads, &ramped, options);
+    return SolveFrameNonlinearStatic(model, forces, loads, ramped, options);
   };
   out.statics = solve(AnyCombVoltage(declared) ? 1.0 : 0.0);
   if (out.statics.status != Status::kOk || declared.empty()) return out;
@@ -214,12 +213,12 @@ CombDriveSolution SolveNonlinearCombDrives(const FrameModel& model, const FrameL
 CombDriveSolution SolveCombDrives(const FrameModel& model, const FrameLoadCase& loads,
                                   const std::vector<CombDrive>& combs,
                                   const std::vector<FrameElementForce*>& forces,
-                                  FrameElementForce* electrodes) {
+                                  const std::vector<FrameElementForce*>& pressures) {
   ValidateCombDrives(combs, static_cast<int>(model.description().bodies.size()));
   CombDriveSolution out =
-      forces.empty() && electrodes == nullptr
+      forces.empty() && pressures.empty()
           ? internal::SolveLinearCombDrives(model, loads, combs)
-          : internal::SolveNonlinearCombDrives(model, loads, combs, forces, electrodes);
+          : internal::SolveNonlinearCombDrives(model, loads, combs, forces, pressures);
   const std::vector<CombDrive> scaled = internal::ScaledCombs(combs);
   for (std::size_t c = 0; c < out.combs.size(); ++c) {
     out.combs[c].side_instability_voltage_v =

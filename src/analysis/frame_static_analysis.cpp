@@ -199,18 +199,20 @@ FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCas
 
 FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
                                               const std::vector<FrameElementForce*>& forces,
-                                              const FrameLoadCase& loads, FrameElementForce* ramped,
+                                              const FrameLoadCase& loads,
+                                              const std::vector<FrameElementForce*>& ramped,
                                               const NonlinearStaticOptions& options) {
   FrameStaticSolution out;
-  ForceSum sum;
-  for (FrameElementForce* force : forces) sum.Add(*force);
-  NonlinearStaticSolve solve(model.Stiffness(), sum, options, ramped);
+  ForceSum held, grown;
+  for (FrameElementForce* force : forces) held.Add(*force);
+  for (FrameElementForce* force : ramped) grown.Add(*force);
+  NonlinearStaticSolve solve(model.Stiffness(), held, options, ramped.empty() ? nullptr : &grown);
   const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
   out.status = solution.status;
   if (out.status != Status::kOk) return out;
   out.displacement = solution.displacement;
   std::vector<FrameElementForce*> all = forces;
-  if (ramped != nullptr) all.push_back(ramped);
+  all.insert(all.end(), ramped.begin(), ramped.end());
   internal::RecoverFrameStatic(model, loads, all, out);
   return out;
 }

@@ -4,9 +4,6 @@
 #include <string>
 
 #include "buckling_report.hpp"
-#include "frame_pullin_report.hpp"
-#include "frame_release_report.hpp"
-#include "frame_static_report.hpp"
 #include "haptic_report.hpp"
 #include "modal_report.hpp"
 #include "pullin_report.hpp"
@@ -17,12 +14,9 @@
 namespace cosmems::internal {
 
 std::unique_ptr<AnalysisReport> RunAnalysis(const Scene& scene) {
-  // Static, pull-in and release have a beam report and a device report.
-  const bool device = IsDevice(scene.structure.kind);
   switch (scene.analysis.type) {
     case AnalysisType::kStatic:
-      return device ? std::unique_ptr<AnalysisReport>(FrameStaticReport::Run(scene))
-                    : StaticReport::Run(scene);
+      return StaticReport::Run(scene);
     case AnalysisType::kModal:
       return ModalReport::Run(scene);
     case AnalysisType::kTransient:
@@ -30,11 +24,9 @@ std::unique_ptr<AnalysisReport> RunAnalysis(const Scene& scene) {
     case AnalysisType::kBuckling:
       return BucklingReport::Run(scene);
     case AnalysisType::kPullin:
-      return device ? std::unique_ptr<AnalysisReport>(FramePullInReport::Run(scene))
-                    : PullInReport::Run(scene);
+      return PullInReport::Run(scene);
     case AnalysisType::kRelease:
-      return device ? std::unique_ptr<AnalysisReport>(FrameReleaseReport::Run(scene))
-                    : ReleaseReport::Run(scene);
+      return ReleaseReport::Run(scene);
     case AnalysisType::kHaptic:
       return HapticReport::Run(scene);
   }

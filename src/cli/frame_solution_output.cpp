@@ -12,6 +12,14 @@ nlohmann::ordered_json MotionJson(const FrameModel::Motion& m) {
 
 void AddFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                       nlohmann::ordered_json& json) {
+  json["max_deflection"] = solution.max_deflection;
+  json["max_stress_pa"] = solution.max_stress_pa;
+  json["axial_force_n"] = solution.axial_force_n;
+  AddFrameMotions(structure, solution, json);
+}
+
+void AddFrameMotions(const StructureDescription& structure, const FrameStaticSolution& solution,
+                     nlohmann::ordered_json& json) {
   nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
   for (std::size_t n = 0; n < structure.nodes.size(); ++n) {
     nodes[structure.nodes[n].name] = MotionJson(solution.nodes[n]);
@@ -25,9 +33,6 @@ void AddFrameSolution(const StructureDescription& structure, const FrameStaticSo
     reactions[structure.nodes[r.node].name] = {{"force", ToJson(r.force)},
                                                {"moment", ToJson(r.moment)}};
   }
-  json["max_deflection"] = solution.max_deflection;
-  json["max_stress_pa"] = solution.max_stress_pa;
-  json["axial_force_n"] = solution.axial_force_n;
   json["nodes"] = nodes;
   json["bodies"] = bodies;
   json["reactions"] = reactions;
@@ -40,6 +45,11 @@ void PrintFrameSolution(const StructureDescription& structure, const FrameStatic
   out << "max stress            " << Scientific(solution.max_stress_pa) << " Pa\n";
   out << "axial force           " << Scientific(solution.axial_force_n)
       << " N (the largest in a member)\n";
+  PrintFrameMotions(structure, solution, out);
+}
+
+void PrintFrameMotions(const StructureDescription& structure, const FrameStaticSolution& solution,
+                       std::ostream& out) {
   for (std::size_t n = 0; n < structure.nodes.size(); ++n) {
     out << "node " << structure.nodes[n].name << "  " << Vector(solution.nodes[n].head<3>())
         << " m\n";
@@ -54,26 +64,11 @@ void PrintFrameSolution(const StructureDescription& structure, const FrameStatic
   }
 }
 
-void WriteFrameMotions(const StructureDescription& structure,
-                       const std::vector<FrameModel::Motion>& nodes,
-                       const std::vector<FrameModel::Motion>& bodies,
-                       const std::filesystem::path& directory) {
-  CsvFile motions(directory / "nodes.csv", "name,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
-  auto row = [&](const std::string& name, const FrameModel::Motion& m) {
-    std::vector<std::string> cells = {name};
-    for (int k = 0; k < 6; ++k) cells.push_back(CsvFile::Number(m[k]));
-    motions.Row(cells);
-  };
-  for (std::size_t n = 0; n < nodes.size(); ++n) row(structure.nodes[n].name, nodes[n]);
-  for (std::size_t b = 0; b < bodies.size(); ++b) row(structure.bodies[b].name, bodies[b]);
-  motions.Close();
-}
-
-void WriteFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
-                        const std::filesystem::path& directory) {
-  WriteFrameMotions(structure, solution.nodes, solution.bodies, directory);
+void WriteFrameReactions(const StructureDescription& structure,
+                         const std::vector<FrameReaction>& anchors,
+                         const std::filesystem::path& directory) {
   CsvFile reactions(directory / "reactions.csv", "node,fx_n,fy_n,fz_n,mx_nm,my_nm,mz_nm");
-  for (const FrameReaction& r : solution.reactions) {
+  for (const FrameReaction& r : anchors) {
     std::vector<std::string> cells = {structure.nodes[r.node].name};
     for (int k = 0; k < 3; ++k) cells.push_back(CsvFile::Number(r.force[k]));
     for (int k = 0; k < 3; ++k) cells.push_back(CsvFile::Number(r.moment[k]));

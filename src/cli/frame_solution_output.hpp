@@ -21,19 +21,21 @@ nlohmann::ordered_json MotionJson(const FrameModel::Motion& m);
 void AddFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                       nlohmann::ordered_json& json);
 
+/// nodes, bodies, reactions.
+void AddFrameMotions(const StructureDescription& structure, const FrameStaticSolution& solution,
+                     nlohmann::ordered_json& json);
+
 /// The same as text, one line each.
 void PrintFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
                         std::ostream& out);
 
-/// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body.
-void WriteFrameMotions(const StructureDescription& structure,
-                       const std::vector<FrameModel::Motion>& nodes,
-                       const std::vector<FrameModel::Motion>& bodies,
-                       const std::filesystem::path& directory);
+/// A line for each node, body and reaction.
+void PrintFrameMotions(const StructureDescription& structure, const FrameStaticSolution& solution,
+                       std::ostream& out);
 
-/// nodes.csv: name, ux_m, uy_m, uz_m, rx_rad, ry_rad, rz_rad for every node and body;
 /// reactions.csv: node, fx_n, fy_n, fz_n, mx_nm, my_nm, mz_nm at every anchored node.
-void WriteFrameSolution(const StructureDescription& structure, const FrameStaticSolution& solution,
-                        const std::filesystem::path& directory);
+void WriteFrameReactions(const StructureDescription& structure,
+                         const std::vector<FrameReaction>& anchors,
+                         const std::filesystem::path& directory);
 
 }  // namespace cosmems::internal

@@ -1,69 +1,97 @@
 #include "release_report.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <optional>
 
-#include "contact_report.hpp"
-#include "cosmems/analysis/beam_field.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
-#include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
-#include "csv_file.hpp"
-#include "nodal_shape.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
+#include "frame_solution_output.hpp"
+#include "json_vector.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
-namespace {
 
-template <int Dim>
-std::unique_ptr<ReleaseReport> RunRelease(const Scene& scene) {
+std::unique_ptr<ReleaseReport> ReleaseReport::Run(const Scene& scene) {
   RunHeader header = RunHeader::Start(scene);
   const auto start = std::chrono::steady_clock::now();
-  const BeamModel<Dim> model(MakeBeamDescription(scene));
-  SceneForces<Dim> forces(model, scene);
-  SubstrateContact<Dim>& contact = *forces.contact();
+  StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  const FrameLoadCase loads = MakeFrameLoadCase(scene, structure);
+  FrameSceneForces scene_forces(model, scene);
+  FrameSubstrateContact& contact = *scene_forces.contact();
+  ForceSum forces;  // the statics' forces: the film, a velocity's, has no share
+  for (FrameElementForce* force : scene_forces.elements()) forces.Add(*force);
+  forces.Add(contact);
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
+  if (IsOn(scene.effects.electrostatic)) {
+    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
+                                                      *scene.effects.electrostatic->voltage));
+  }
   contact.StickAll();
   NonlinearStaticOptions options;
   options.start = contact.PressedDisplacement();
-  const NonlinearStaticSolution solution =
-      SolveNonlinearStatic(model, *forces.All(), MakeLoadCase(scene), options);
+  // One node or plate lets go per settle: room for every one of them, and the multipliers'.
+  options.newton.max_settles =
+      std::max(options.newton.max_settles, 4 * static_cast<int>(contact.points().points().size()));
+  NonlinearStaticSolve solve(model.Stiffness(), forces, options,
+                             electrostatic ? &*electrostatic : nullptr);
+  const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = solution.status;
   header.dofs = model.FreeDofCount();
+  header.model.elements = model.ElementCount();
 
   ReleaseResults results;
   if (solution.status == Status::kOk) {
-    results.contact = contact.Summary();
-    results.shape = WithNodePositions(model.NodeX(), model.units().length,
-                                      BeamField<Dim>(model, solution.displacement).AtNodes());
+    results.contact = FrameContactResults::Of(contact, structure);
+    FrameStaticSolution motions;
+    motions.displacement = solution.displacement;
+    RecoverFrameMotions(model, motions);
+    results.nodes = std::move(motions.nodes);
+    results.bodies = std::move(motions.bodies);
+    results.stations = Stations(model, IsStraightBeam(scene));
+    results.motions = results.stations.Motions(model, solution.displacement);
   }
-  return std::make_unique<ReleaseReport>(std::move(header), std::move(results));
-}
-
-}  // namespace
-
-std::unique_ptr<ReleaseReport> ReleaseReport::Run(const Scene& scene) {
-  return scene.model.dimension == 2 ? RunRelease<2>(scene) : RunRelease<3>(scene);
+  return std::make_unique<ReleaseReport>(std::move(header), std::move(structure),
+                                         std::move(results));
 }
 
 void ReleaseReport::AddResults(nlohmann::ordered_json& json) const {
-  const ContactSummary& c = results_.contact;
+  const ContactSummary& c = results_.contact.contact;
   json["stuck"] = c.Stuck();
   json["shape"] = ToString(c.shape);
-  json["detached_length_m"] = c.detached_length_m;
-  json["contact_length_m"] = c.contact_length_m;
-  json["contact"] = ContactJson(c);
+  if (results_.contact.HasLengths()) {
+    json["detached_length_m"] = c.detached_length_m;
+    json["contact_length_m"] = c.contact_length_m;
+  } else {
+    json["detached_length_m"] = nullptr;
+    json["contact_length_m"] = nullptr;
+  }
+  nlohmann::ordered_json nodes = nlohmann::ordered_json::object();
+  for (std::size_t n = 0; n < results_.nodes.size(); ++n) {
+    nodes[structure_.nodes[n].name] = MotionJson(results_.nodes[n]);
+  }
+  json["nodes"] = nodes;
+  nlohmann::ordered_json bodies = nlohmann::ordered_json::object();
+  for (std::size_t b = 0; b < results_.bodies.size(); ++b) {
+    bodies[structure_.bodies[b].name] = MotionJson(results_.bodies[b]);
+  }
+  json["bodies"] = bodies;
+  if (results_.contact.declared) AddFrameContact(structure_, results_.contact, json);
 }
 
 void ReleaseReport::PrintResults(std::ostream& out) const {
-  out << "after release         " << Describe(results_.contact.shape) << "\n";
-  PrintContact(out, results_.contact);
+  out << "after release         " << Describe(results_.contact.contact.shape) << "\n";
+  if (results_.contact.declared) PrintFrameContact(structure_, results_.contact, out);
 }
 
 void ReleaseReport::WriteFiles(const std::filesystem::path& directory) const {
-  CsvFile csv(directory / "release_shape.csv", "x_m,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
-  csv.Rows(results_.shape);
-  csv.Close();
+  results_.stations.WriteMotions(directory, "release_shape.csv", results_.motions);
 }
 
 }  // namespace cosmems::internal

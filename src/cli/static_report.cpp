@@ -1,111 +1,155 @@
 #include "static_report.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
-#include "contact_report.hpp"
-#include "cosmems/analysis/beam_field.hpp"
+#include "comb_output.hpp"
 #include "cosmems/analysis/cosserat_static_solver.hpp"
-#include "cosmems/analysis/nonlinear_static_analysis.hpp"
-#include "cosmems/analysis/static_analysis.hpp"
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/rod/rod_field.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
-#include "csv_file.hpp"
+#include "frame_solution_output.hpp"
 #include "json_vector.hpp"
-#include "nodal_shape.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
 namespace {
 
-// The statics of the scene's forces: the loads and the surface pressures ramped together from
-// the unloaded beam. A ramp that stops short of its full value met a fold: no equilibrium is left
-// short of the substrate, the beam has collapsed; with contact, the equilibrium lying on the
-// substrate is then solved for from the beam pressed down all along (`resting` says whether it
-// was found; if not, the last stable state is returned).
-template <int Dim>
-NonlinearStaticSolution SolveWithForces(const BeamModel<Dim>& model, SceneForces<Dim>& forces,
-                                        const LoadCase& loads, bool& collapsed, bool& resting) {
-  ForceSum* pressures = forces.pressures().Empty() ? nullptr : &forces.pressures();
-  NonlinearStaticSolution out =
-      SolveNonlinearStatic(model, forces.structural(), loads, {}, pressures);
-  collapsed = pressures && out.status != Status::kOk;
-  resting = false;
-  if (!collapsed || !forces.contact()) return out;
-  NonlinearStaticOptions pressed;
-  pressed.start = forces.contact()->PressedDisplacement();
-  NonlinearStaticSolution down = SolveNonlinearStatic(model, *forces.All(), loads, pressed);
-  resting = down.status == Status::kOk;
-  return resting ? down : out;
+// A structure whose surface forces fold before their full value has no equilibrium short of the
+// substrate: the one lying on it, every force at its full value (the pressures too). Newton from
+// the structure pressed down all over flips the points its springs lift between held and clear
+// at every iteration and does not converge (measured on a plate on four beams, even with no
+// force but the contact); so it is first released from there with no adhesion to hold it (every
+// point stuck, then let go edge by edge where it pulls, as the release analysis peels), and the
+// scene's contact is solved from that state, every point a hair (twice the tolerance) lower so
+// that the contact holds those lying on the plane from the first iteration: released, they sit
+// within the tolerance above it, and without them the electrodes' negative stiffness leaves the
+// Newton matrix indefinite.
+FrameStaticSolution SolveResting(const Scene& scene, const FrameModel& model,
+                                 const FrameLoadCase& loads, std::vector<FrameElementForce*> forces,
+                                 const std::vector<FrameElementForce*>& pressures,
+                                 FrameSubstrateContact& contact) {
+  ContactOptions letting_go = MakeContactOptions(scene);
+  letting_go.stiction = true;
+  letting_go.adhesion_energy = std::numeric_limits<double>::min();
+  FrameSubstrateContact release(model, letting_go);
+  release.StickAll();
+  NonlinearStaticOptions options;
+  options.start = release.PressedDisplacement();
+  // One point or plate lets go per settle: room for every one of them, and the multipliers'.
+  options.newton.max_settles =
+      std::max(options.newton.max_settles, 4 * static_cast<int>(release.points().points().size()));
+  forces.insert(forces.end(), pressures.begin(), pressures.end());
+  std::vector<FrameElementForce*> released = forces;
+  std::replace(released.begin(), released.end(), static_cast<FrameElementForce*>(&contact),
+               static_cast<FrameElementForce*>(&release));
+  const FrameStaticSolution lying = SolveFrameNonlinearStatic(model, released, loads, {}, options);
+  if (lying.status != Status::kOk) return lying;
+  options.start = lying.displacement;
+  const double below = 2.0 * contact.tolerance() / model.units().length;
+  for (int c = 0; c < static_cast<int>(model.mesh().carriers.size()); ++c) {
+    const int uy = model.CarrierDof(c, 1);
+    if (uy >= 0) options.start[uy] -= below;
+  }
+  contact.Reset();
+  return SolveFrameNonlinearStatic(model, forces, loads, {}, options);
 }
 
-template <int Dim>
-std::unique_ptr<StaticReport> RunStatic(const Scene& scene) {
-  RunHeader header = RunHeader::Start(scene);
-  const LoadCase loads = MakeLoadCase(scene);
-  const auto start = std::chrono::steady_clock::now();
-  const BeamModel<Dim> model(MakeBeamDescription(scene));
-  SceneForces<Dim> forces(model, scene);
-  StaticSolution solution;
-  StaticResults results;
-  double load_factor = 1.0;
-  bool resting = false;
-  if (forces.Empty()) {
-    solution = SolveStatic(model, loads);
-  } else {
-    const NonlinearStaticSolution nonlinear =
-        SolveWithForces(model, forces, loads, results.collapsed, resting);
-    solution.status = nonlinear.status;
-    solution.displacement = nonlinear.displacement;
-    load_factor = nonlinear.load_factor;
-    // Collapsed and not resting on the substrate: the last stable state is reported.
-    if (results.collapsed && !resting) solution.status = Status::kOk;
+// A straight beam's points of interest: the tip (a cantilever's) and the midspan.
+void AddBeamPoints(const Scene& scene, const FrameModel& model, const Eigen::VectorXd& d,
+                   StaticResults& results) {
+  const auto at = [&](double x) {
+    FrameModel::Motion m = model.MemberMotion(d, 0, x);
+    m.head<3>() *= model.units().length;
+    return m;
+  };
+  if (scene.structure.kind == StructureKind::kCantilever) {
+    const FrameModel::Motion tip = at(1.0);
+    results.tip_displacement = tip.head<3>();
+    results.tip_rotation = tip.tail<3>();
   }
-  // N - N0 of a stretching beam, uniform along it (internal units).
-  const double stretched =
-      forces.stretching() && solution.status == Status::kOk
-          ? forces.stretching()->AxialForce(solution.displacement) - model.AxialLoad()
-          : 0.0;
+  results.midspan_displacement = at(0.5).head<3>();
+}
+
+// The statics of the scene's netlist: the loads ramped together with every pressure across the
+// gap (the electrodes', Casimir's, van der Waals'), from the unloaded structure held by its
+// members' stretching; with comb drives, their side instability too (SolveCombDrives). A ramp
+// that stops short of its full value met a fold: the structure has collapsed, and with contact
+// the equilibrium lying on the substrate is solved for (SolveResting).
+std::unique_ptr<StaticReport> RunFrameStatic(const Scene& scene) {
+  RunHeader header = RunHeader::Start(scene);
+  const auto start = std::chrono::steady_clock::now();
+  StaticResults results;
+  results.gap = scene.structure.gap;
+  StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  const FrameLoadCase loads = MakeFrameLoadCase(scene, structure);
+  results.combs = MakeCombDrives(scene, structure);
+  FrameSceneForces scene_forces(model, scene);
+  FrameSubstrateContact* contact = scene_forces.contact();
+  std::vector<FrameElementForce*> forces = scene_forces.held();
+  if (contact) forces.push_back(contact);
+  std::vector<FrameElementForce*> pressures = scene_forces.pressures();
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
+  if (IsOn(scene.effects.electrostatic)) {
+    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
+                                                      *scene.effects.electrostatic->voltage));
+    pressures.insert(pressures.begin(), &*electrostatic);
+  }
+  FrameStaticSolution& solution = results.solution;
+  if (!results.combs.empty()) {
+    CombDriveSolution driven = SolveCombDrives(model, loads, results.combs, forces, pressures);
+    solution = std::move(driven.statics);
+    results.comb_states = std::move(driven.combs);
+  } else if (!pressures.empty() || !forces.empty()) {
+    solution = SolveFrameNonlinearStatic(model, forces, loads, pressures);
+    results.collapsed = !pressures.empty() && solution.status != Status::kOk;
+    if (results.collapsed && contact) {
+      solution = SolveResting(scene, model, loads, forces, pressures, *contact);
+    }
+  } else {
+    solution = SolveFrameStatic(model, loads);
+  }
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = solution.status;
   header.dofs = model.FreeDofCount();
-
-  results.gap = scene.structure.gap;
-  if (forces.contact() && (!results.collapsed || resting)) {
-    results.contact = forces.contact()->Summary();
-  }
-  if (solution.status != Status::kOk) {
-    return std::make_unique<StaticReport>(std::move(header), std::move(results));
-  }
-  if (results.collapsed && !resting) {
+  header.model.elements = model.ElementCount();
+  if (solution.status == Status::kOk) {
+    if (electrostatic) {
+      results.electrostatic_capacitance_f = electrostatic->Capacitance(solution.displacement);
+    }
+    if (contact) results.contact = FrameContactResults::Of(*contact, structure);
+    if (IsStraightBeam(scene)) AddBeamPoints(scene, model, solution.displacement, results);
+    results.max_deflection = solution.max_deflection;
+    results.max_stress_pa = solution.max_stress_pa;
+    results.axial_force_n = solution.axial_force_n;
+    results.stations = Stations(model, IsStraightBeam(scene));
+    results.motions = results.stations.Motions(model, solution.displacement);
+    // Under a surface pressure every gap stays open in a solution (a closed one fails the solve).
+    if (pressures.empty() && !contact) {
+      header.WarnIfThroughSubstrate("the linear solution deflects", solution.max_deflection,
+                                    scene.structure.gap);
+    }
+  } else if (!pressures.empty() && SpdSolver().Compute(model.Stiffness()) == Status::kOk) {
+    // A supported structure that finds no equilibrium under its surface forces has pulled in:
+    // its tangent turned indefinite on the way, which is no fault of its supports.
+    header.status = Status::kNotConverged;
     header.warnings.push_back(
-        "collapsed: no equilibrium short of the substrate beyond " +
-        Significant(100.0 * load_factor, 4) +
-        " % of the loads and surface forces; the fields are those of the last stable state " +
-        (forces.contact() ? "(Newton from the beam pressed onto the substrate did not find it "
-                            "resting there)"
-                          : "(declare [effects.contact] for the beam lying on the substrate)"));
+        IsOn(scene.effects.electrostatic)
+            ? "no equilibrium up to effects.electrostatic.voltage: the structure pulls in below "
+              "it (run analysis.type = \"pullin\" for the voltage)"
+            : "no equilibrium: the surface forces pull the structure onto the substrate");
+    if (!contact) {
+      header.warnings.push_back(
+          "declare [effects.contact] for the structure lying on the substrate");
+    }
   }
-  const BeamField<Dim> field(model, solution.displacement);
-  const double length = scene.structure.length;
-  if (scene.structure.kind == StructureKind::kCantilever) {
-    const typename BeamField<Dim>::Vector6 tip = field.At(length);
-    results.tip_displacement = tip.template head<3>();
-    results.tip_rotation = tip.template tail<3>();
-  }
-  results.midspan_displacement = field.At(0.5 * length).template head<3>();
-  results.max_deflection = field.MaxDeflectionTowardSubstrate();
-  const double stretched_n = stretched * model.units().force;
-  results.max_stress_pa = field.MaxStress(stretched_n);
-  results.axial_force_n = field.AxialForce(0) + stretched_n;
-  results.nodes = WithNodePositions(model.NodeX(), model.units().length, field.AtNodes());
-  if (!forces.contact()) {
-    header.WarnIfThroughSubstrate(
-        forces.Empty() ? "the linear solution deflects" : "the solution deflects",
-        results.max_deflection, results.gap);
-  }
+  results.structure = std::move(structure);
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
 
@@ -139,7 +183,8 @@ std::unique_ptr<StaticReport> RunCosseratStatic(const Scene& scene) {
   Eigen::Vector3d force, moment;
   rod.ElementResultants(state, 0, force, moment);
   results.axial_force_n = force.x();
-  results.nodes = WithNodePositions(rod.NodeX(), rod.units().length, field.AtNodes());
+  results.stations = Stations::AlongAxis(rod.NodeX(), rod.units().length);
+  results.motions = field.AtNodes();
   header.WarnIfThroughSubstrate("the solution deflects", results.max_deflection, results.gap);
   return std::make_unique<StaticReport>(std::move(header), std::move(results));
 }
@@ -147,42 +192,55 @@ std::unique_ptr<StaticReport> RunCosseratStatic(const Scene& scene) {
 }  // namespace
 
 std::unique_ptr<StaticReport> StaticReport::Run(const Scene& scene) {
-  if (scene.model.theory == Theory::kCosserat) return RunCosseratStatic(scene);
-  return scene.model.dimension == 2 ? RunStatic<2>(scene) : RunStatic<3>(scene);
+  return scene.model.theory == Theory::kCosserat ? RunCosseratStatic(scene) : RunFrameStatic(scene);
 }
 
 void StaticReport::AddResults(nlohmann::ordered_json& json) const {
-  if (results_.tip_displacement) json["tip_displacement"] = ToJson(*results_.tip_displacement);
-  json["midspan_displacement"] = ToJson(results_.midspan_displacement);
-  if (results_.tip_rotation) json["tip_rotation"] = ToJson(*results_.tip_rotation);
-  json["max_deflection"] = results_.max_deflection;
-  json["max_stress_pa"] = results_.max_stress_pa;
-  json["axial_force_n"] = results_.axial_force_n;
-  json["collapsed"] = results_.collapsed;
-  if (results_.contact) json["contact"] = ContactJson(*results_.contact);
+  const StaticResults& r = results_;
+  if (r.tip_displacement) json["tip_displacement"] = ToJson(*r.tip_displacement);
+  if (r.midspan_displacement) json["midspan_displacement"] = ToJson(*r.midspan_displacement);
+  if (r.tip_rotation) json["tip_rotation"] = ToJson(*r.tip_rotation);
+  json["max_deflection"] = r.max_deflection;
+  json["max_stress_pa"] = r.max_stress_pa;
+  json["axial_force_n"] = r.axial_force_n;
+  if (r.structure) AddFrameMotions(*r.structure, r.solution, json);
+  json["collapsed"] = r.collapsed;
+  if (r.contact.declared) AddFrameContact(*r.structure, r.contact, json);
+  if (r.electrostatic_capacitance_f) {
+    json["capacitance_f"] = {{"electrostatic", *r.electrostatic_capacitance_f}};
+  }
+  if (r.structure) AddCombStates(*r.structure, r.combs, r.comb_states, json);
 }
 
 void StaticReport::PrintResults(std::ostream& out) const {
-  if (results_.tip_displacement) {
-    out << "tip deflection        " << Scientific(results_.tip_displacement->y()) << " m\n";
-    out << "tip displacement      " << Vector(*results_.tip_displacement) << " m\n";
-    out << "tip rotation          " << Vector(*results_.tip_rotation) << " rad\n";
+  const StaticResults& r = results_;
+  if (r.tip_displacement) {
+    out << "tip deflection        " << Scientific(r.tip_displacement->y()) << " m\n";
+    out << "tip displacement      " << Vector(*r.tip_displacement) << " m\n";
+    out << "tip rotation          " << Vector(*r.tip_rotation) << " rad\n";
   }
-  out << "midspan displacement  " << Vector(results_.midspan_displacement) << " m\n";
-  out << "max deflection        " << Scientific(results_.max_deflection)
-      << " m toward the substrate";
-  if (results_.gap) out << " (gap " << Significant(*results_.gap) << " m)";
+  if (r.midspan_displacement) {
+    out << "midspan displacement  " << Vector(*r.midspan_displacement) << " m\n";
+  }
+  out << "max deflection        " << Scientific(r.max_deflection) << " m toward the substrate";
+  if (r.gap) out << " (gap " << Significant(*r.gap) << " m)";
   out << "\n";
-  out << "max stress            " << Scientific(results_.max_stress_pa) << " Pa\n";
-  out << "axial force           " << Scientific(results_.axial_force_n) << " N\n";
-  if (results_.collapsed) out << "collapsed             snapped onto the substrate\n";
-  if (results_.contact) PrintContact(out, *results_.contact);
+  out << "max stress            " << Scientific(r.max_stress_pa) << " Pa\n";
+  out << "axial force           " << Scientific(r.axial_force_n) << " N\n";
+  if (r.structure) PrintFrameMotions(*r.structure, r.solution, out);
+  if (r.collapsed) out << "collapsed             snapped onto the substrate\n";
+  if (r.contact.declared) PrintFrameContact(*r.structure, r.contact, out);
+  if (r.electrostatic_capacitance_f) {
+    out << "capacitance           " << Scientific(*r.electrostatic_capacitance_f)
+        << " F (the faces over the electrodes)\n";
+  }
+  if (r.structure) PrintCombStates(*r.structure, r.combs, r.comb_states, out);
 }
 
 void StaticReport::WriteFiles(const std::filesystem::path& directory) const {
-  CsvFile csv(directory / "deflection.csv", "x_m,ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
-  csv.Rows(results_.nodes);
-  csv.Close();
+  const StaticResults& r = results_;
+  r.stations.WriteMotions(directory, "deflection.csv", r.motions);
+  if (r.structure) WriteFrameReactions(*r.structure, r.solution.reactions, directory);
 }
 
 }  // namespace cosmems::internal

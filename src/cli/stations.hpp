@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,16 @@ class Stations {
     }
     for (const StructureNode& node : model.description().nodes) labels_.push_back(node.name);
     for (const StructureBody& body : model.description().bodies) labels_.push_back(body.name);
+  }
+
+  /// Stations at x (internal units of `length_unit` m) along the axis of a beam that is not a
+  /// frame (the Cosserat rod): labels for the rows of values computed elsewhere; Motions() and
+  /// Shape() need a frame's stations.
+  static Stations AlongAxis(const std::vector<double>& x, double length_unit) {
+    Stations out;
+    out.along_axis_ = true;
+    for (double xi : x) out.labels_.push_back(CsvFile::Number(xi * length_unit));
+    return out;
   }
 
   /// The CSV column that labels the rows: "x_m" or "name".
@@ -76,6 +87,16 @@ class Stations {
       }
     }
     return values / largest;
+  }
+
+  /// The motions `values` (one row per station, SI) in `directory`: in `along_axis_file` with
+  /// x_m rows along a beam, in nodes.csv with name rows at every node and body.
+  void WriteMotions(const std::filesystem::path& directory, const std::string& along_axis_file,
+                    const Eigen::MatrixXd& values) const {
+    CsvFile csv(directory / (along_axis_ ? along_axis_file : "nodes.csv"),
+                Key() + ",ux_m,uy_m,uz_m,rx_rad,ry_rad,rz_rad");
+    WriteRows(csv, values);
+    csv.Close();
   }
 
   /// Rows of `values` (one per station), each after `first_cell` when given and the station's

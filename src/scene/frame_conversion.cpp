@@ -149,6 +149,11 @@ FramePullInOptions MakeFramePullInOptions(const Scene& scene) {
     out.electrodes.electrodes.clear();
     for (const SceneElectrode& r : e.electrodes) out.electrodes.electrodes.push_back({r.x, r.z});
   }
+  if (e.electrode_start || e.electrode_end) {  // a beam's electrode: a span of its length
+    Electrode span;
+    span.x = {e.electrode_start.value_or(0.0), e.electrode_end.value_or(scene.structure.length)};
+    out.electrodes.electrodes = {span};
+  }
   out.fringing = e.fringing;
   if (scene.analysis.voltage_max) out.fold.max_load = std::pow(*scene.analysis.voltage_max, 2);
   return out;

@@ -77,7 +77,7 @@ TEST(DeviceSurfaceCliTest, CasimirHoldsOrPullsInTheSerpentinePlate) {
   closed.insert(closed.end(), {"--set", "structure.gap=0.05e-6"});
   const nlohmann::json collapsed = RunJson(closed, 3);
   EXPECT_EQ(collapsed["status"], "not converged");
-  ExpectContains(collapsed["warnings"].dump(), "the surface forces pull the device onto");
+  ExpectContains(collapsed["warnings"].dump(), "the surface forces pull the structure onto");
   // With the contact 20 nm above the substrate the collapsed plate lies on the contact plane, 30
   // nm down, within the tolerance (1e-4 of the gap); the pressure is held at the plane's gap.
   closed.insert(closed.end(), {"--set", "effects.contact.separation=2e-8"});

@@ -88,15 +88,23 @@ TEST(SurfaceCliTest, StaticContactStopsTheTipAtTheSubstrate) {
   EXPECT_EQ(json.at("warnings"), nlohmann::json::array());
 }
 
-// 20 V is above the cantilever's 14.6 V pull-in: no equilibrium short of the substrate; the
-// result says collapsed and gives the last stable state. 10 V holds.
+// 20 V is above the cantilever's 14.6 V pull-in: no equilibrium short of the substrate, which
+// the result says (exit 3, the pull-in analysis named); with contact the beam lies
+// on the contact plane. 10 V holds.
 TEST(SurfaceCliTest, StaticAbovePullInCollapses) {
-  const nlohmann::json above = RunJson(
-      {"cantilever", "--set", "model.dimension=2", "--set", "effects.electrostatic.voltage=20.0"});
-  EXPECT_EQ(above.at("status"), "ok");
-  EXPECT_TRUE(above.at("collapsed").get<bool>());
-  ASSERT_EQ(above.at("warnings").size(), 1u);
-  ExpectContains(above["warnings"][0], "collapsed");
+  const std::vector<std::string> pulled = {"cantilever", "--set", "model.dimension=2", "--set",
+                                           "effects.electrostatic.voltage=20.0"};
+  const nlohmann::json above = RunJson(pulled, 3);
+  EXPECT_EQ(above.at("status"), "not converged");
+  ExpectContains(above["warnings"].dump(), "pulls in below it");
+  std::vector<std::string> floor = pulled;
+  floor.insert(floor.end(), {"--set", "effects.contact.separation=1e-7"});
+  const nlohmann::json lying = RunJson(floor);
+  EXPECT_EQ(lying.at("status"), "ok");
+  EXPECT_TRUE(lying.at("collapsed").get<bool>());
+  // On the contact plane, within the contact's tolerance (1e-4 of the gap).
+  EXPECT_NEAR(lying.at("tip_displacement")[1].get<double>(), -1.9e-6, 1e-4 * 2e-6);
+  EXPECT_TRUE(lying.at("contact").at("in_contact").get<bool>());
   const nlohmann::json below = RunJson(
       {"cantilever", "--set", "model.dimension=2", "--set", "effects.electrostatic.voltage=10.0"});
   EXPECT_FALSE(below.at("collapsed").get<bool>());

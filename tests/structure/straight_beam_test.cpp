@@ -267,6 +267,30 @@ TEST(StraightBeamTest, AMemberBucklesAtEulersLoadWhateverItsResidualForce) {
   }
 }
 
+// The largest stress comes from the elements' end forces, which carry each element's share of
+// the distributed load: a bridge under a uniform load q has its largest moment q L^2 / 12 at the
+// clamps whatever its mesh (the Hermite element's end forces are exact for a uniform load), so
+// its largest stress is q L^2 / 12 * (t/2) / I, and its clamps hold q L / 2 each (1e-10: the
+// solve's round-off on four elements).
+TEST(StraightBeamTest, ALoadedBridgeHasTheClosedFormStressAtItsClamps) {
+  const double q = -0.5;  // N/m, toward the substrate
+  const double l = kReferenceLength;
+  for (int elements : {4, 9}) {
+    const FrameModel bridge(StraightBeam(ChainDesign(true, elements, 1, true)));
+    FrameLoadCase uniform;
+    uniform.distributed = {0.0, q, 0.0};
+    const FrameStaticSolution s = SolveFrameStatic(bridge, uniform);
+    ASSERT_EQ(s.status, Status::kOk);
+    const RectangularSection section = test::ReferenceSection();
+    const double stress =
+        std::abs(q) * l * l / 12.0 * (0.5 * section.thickness) / section.SecondMomentZ();
+    EXPECT_NEAR(s.max_stress_pa, stress, 1e-10 * stress) << elements;
+    for (const FrameReaction& r : s.reactions) {
+      EXPECT_NEAR(r.force.y(), -0.5 * q * l, 1e-10 * std::abs(q) * l) << elements;
+    }
+  }
+}
+
 // A planar description out of its plane is refused naming model.dimension.
 TEST(StraightBeamTest, APlanarStructureOutOfItsPlaneIsRefused) {
   StructureDescription s = StraightBeam(ChainDesign(false, 4, 1, true));

@@ -80,7 +80,7 @@ TEST(FramePullInTest, PlateBelowPullInRestsWhereTheSpringHoldsThePressure) {
   const double v = 0.9 * device.PullInVoltage();
   FrameGapForce<ElectrostaticPressure> pressure =
       MakeFrameElectrostaticForce(model, device.Options(), v);
-  const FrameStaticSolution s = SolveFrameNonlinearStatic(model, {}, {}, &pressure);
+  const FrameStaticSolution s = SolveFrameNonlinearStatic(model, {}, {}, {&pressure});
   ASSERT_EQ(s.status, Status::kOk);
   const double x = device.Rest(v);
   EXPECT_NEAR(-s.bodies[0][1], x, 1e-8 * x);

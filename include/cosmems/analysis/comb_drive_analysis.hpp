@@ -40,15 +40,15 @@ struct CombDriveSolution {
 /// side instability of the combs together: every comb's voltage scaled by one factor, the
 /// scene's loads and every other force held, until the suspension no longer holds the bodies
 /// across their fingers. When every comb is at 0 V the factor scales 1 V on each. With no other
-/// force (`forces` empty, no `electrodes`) the statics are linear and the combs' forces loads,
+/// force (`forces` and `pressures` empty) the statics are linear and the combs' forces loads,
 /// the instability in closed form (internal::SolveLinearCombDrives); otherwise the combs are a
 /// CombDriveForce in Newton's statics beside `forces`, ramped with the loads together with the
-/// electrodes' pressure (SolveFrameNonlinearStatic), and the instability is bisected on the
-/// tangent's definiteness. Statuses as SolveFrameStatic's and SolveFrameNonlinearStatic's.
+/// `pressures` across the gap (SolveFrameNonlinearStatic), and the instability is bisected on
+/// the tangent's definiteness. Statuses as SolveFrameStatic's and SolveFrameNonlinearStatic's.
 CombDriveSolution SolveCombDrives(const FrameModel& model, const FrameLoadCase& loads,
                                   const std::vector<CombDrive>& combs,
                                   const std::vector<FrameElementForce*>& forces = {},
-                                  FrameElementForce* electrodes = nullptr);
+                                  const std::vector<FrameElementForce*>& pressures = {});
 
 /// The comb drives of a frame's transient: each comb's engagement force at 1 V at its body's
 /// centre, a pattern the run scales by the square of the comb's voltage in time. Centred, the

@@ -85,15 +85,16 @@ FrameStaticSolution SolveFrameStatic(const FrameModel& model, const FrameLoadCas
 
 /// Statics of a frame under nonlinear forces, K u + r(u) + lambda r_s(u) = lambda f (Nonlinear-
 /// StaticSolve: adaptive load steps, Newton with the consistent tangent), r the sum of `forces`
-/// (members that stretch as they bend) and r_s the optional `ramped` force, which grows with the
-/// loads (a pressure across the gap: V^2 rises from 0 with them). The results are
-/// SolveFrameStatic's; the end forces, reactions and axial forces carry each force's share. A
+/// (members that stretch as they bend) and r_s the sum of the `ramped` forces, which grow with
+/// the loads (the pressures across the gap: an electrode's V^2 rises from 0 with them, and the
+/// Casimir and van der Waals pressures leave no unloaded equilibrium to start from). The results
+/// are SolveFrameStatic's; the end forces, reactions and axial forces carry each force's share. A
 /// state the solve cannot reach is Status::kNotConverged, with no results but the status (a
 /// device pulled past its pull-in voltage has none).
 FrameStaticSolution SolveFrameNonlinearStatic(const FrameModel& model,
                                               const std::vector<FrameElementForce*>& forces,
                                               const FrameLoadCase& loads,
-                                              FrameElementForce* ramped = nullptr,
+                                              const std::vector<FrameElementForce*>& ramped = {},
                                               const NonlinearStaticOptions& options = {});
 
 }  // namespace cosmems

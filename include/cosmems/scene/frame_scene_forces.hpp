@@ -25,16 +25,18 @@ class FrameSceneForces {
  public:
   FrameSceneForces(const FrameModel& model, const Scene& scene) {
     const SceneEffects& e = scene.effects;
-    if (scene.model.theory == Theory::kStretching) elements_.push_back(&stretching_.emplace(model));
+    if (scene.model.theory == Theory::kStretching) held_.push_back(&stretching_.emplace(model));
     FrameGapOptions substrate{scene.structure.gap.value_or(0.0)};
     if (e.HasContact()) substrate.separation = MakeContactOptions(scene).separation;
     if (IsOn(e.casimir)) {
-      elements_.push_back(&casimir_.emplace(model, CasimirPressure{}, substrate));
+      pressures_.push_back(&casimir_.emplace(model, CasimirPressure{}, substrate));
     }
     if (IsOn(e.van_der_waals)) {
-      elements_.push_back(&van_der_waals_.emplace(
+      pressures_.push_back(&van_der_waals_.emplace(
           model, VanDerWaalsPressure{*e.van_der_waals->hamaker}, substrate));
     }
+    elements_ = held_;
+    elements_.insert(elements_.end(), pressures_.begin(), pressures_.end());
     for (FrameElementForce* force : elements_) all_.Add(*force);
     if (IsOn(e.squeeze_film)) {
       all_.Add(film_.emplace(model, MakeSqueezeFilmOptions(scene), substrate.gap));
@@ -46,6 +48,11 @@ class FrameSceneForces {
 
   /// The forces at rest, element by element (statics and pull-in): stretching and the pressures.
   const std::vector<FrameElementForce*>& elements() const { return elements_; }
+  /// Of those, the members' stretching, which holds an unloaded structure at rest.
+  const std::vector<FrameElementForce*>& held() const { return held_; }
+  /// Of those, the Casimir and van der Waals pressures, which leave no unloaded equilibrium to
+  /// start from: statics ramp them with the loads.
+  const std::vector<FrameElementForce*>& pressures() const { return pressures_; }
   /// Every force, the film and the contact included (a transient's); the run may add its
   /// electrodes.
   ForceSum& all() { return all_; }
@@ -58,7 +65,7 @@ class FrameSceneForces {
   std::optional<FrameGapForce<VanDerWaalsPressure>> van_der_waals_;
   std::optional<FrameSqueezeFilm> film_;
   std::optional<FrameSubstrateContact> contact_;
-  std::vector<FrameElementForce*> elements_;
+  std::vector<FrameElementForce*> held_, pressures_, elements_;
   ForceSum all_;
 };
 

@@ -204,6 +204,13 @@ class FrameModel {
   /// may tie two degrees of freedom only when they do.
   bool Coupled(int i, int j) const { return group_[i % 6] == group_[j % 6]; }
 
+  /// Whether the model has direction d (0..5: ux, uy, uz, rx, ry, rz) at all: a planar one only
+  /// u_x, u_y and r_z. A carrier's direction that the model has but numbers no unknown is held.
+  bool Moves(int d) const {
+    return !description_.planar || d == static_cast<int>(NodalDof::kUx) ||
+           d == static_cast<int>(NodalDof::kUy) || d == static_cast<int>(NodalDof::kRz);
+  }
+
   /// How a mesh node moves with its carrier: identity for a free node, [I -[r]x; 0 I] on a body.
   Eigen::Matrix<double, 6, 6> NodeTransform(int node) const {
     Eigen::Matrix<double, 6, 6> t = Eigen::Matrix<double, 6, 6>::Identity();
@@ -258,12 +265,6 @@ class FrameModel {
       }
     }
     for (int d = 0; d < 6; ++d) group_[d] = root(d);
-  }
-
-  // Whether the model has direction d at all: a planar one only u_x, u_y and r_z.
-  bool Moves(int d) const {
-    return !description_.planar || d == static_cast<int>(NodalDof::kUx) ||
-           d == static_cast<int>(NodalDof::kUy) || d == static_cast<int>(NodalDof::kRz);
   }
 
   // Carriers in reverse Cuthill-McKee order over the elements' connections, each group of

@@ -56,8 +56,8 @@ class FrameAdhesionSites {
     auto free_end = [&](int node) {
       const int carrier = mesh.nodes[node].carrier;
       if (degree[node] != 1 || mesh.carriers[carrier].body >= 0) return false;
-      for (int d = 0; d < 6; ++d) {
-        if (model.CarrierDof(carrier, d) < 0) return false;
+      for (int d = 0; d < 6; ++d) {  // a planar model has no out-of-plane directions to hold
+        if (model.Moves(d) && model.CarrierDof(carrier, d) < 0) return false;
       }
       return true;
     };
