@@ -15,8 +15,27 @@ namespace cosmems {
 OutputPoint FrameMotionComponent(const FrameModel& model, const FrameRecordPoint& point, int c) {
   OutputPoint out;
   out.length_unit = model.units().length;
-  const int nodes = static_cast<int>(model.description().nodes.size());
-  const int bodies = static_cast<int>(model.description().bodies.size());
+  const StructureDescription& s = model.description();
+  const int nodes = static_cast<int>(s.nodes.size());
+  const int bodies = static_cast<int>(s.bodies.size());
+  const int members = static_cast<int>(s.members.size());
+  if (point.node < 0 && point.body < 0) {
+    if (point.member < 0 || point.member >= members || !(point.at >= 0.0 && point.at <= 1.0)) {
+      throw std::invalid_argument("a recorded point names no point of a member of the structure");
+    }
+    // The member's interpolation is linear in the state: its weights are its values on the
+    // unit states of the element's degrees of freedom.
+    const int e = model.Locate(point.member, point.at).first;
+    Eigen::VectorXd unit = Eigen::VectorXd::Zero(model.FreeDofCount());
+    for (int r : model.ElementDofs(e)) {
+      if (r < 0) continue;
+      unit[r] = 1.0;
+      const double w = model.MemberMotion(unit, point.member, point.at)[c];
+      unit[r] = 0.0;
+      if (w != 0.0) out.weights.emplace_back(r, w);
+    }
+    return out;
+  }
   const bool body = point.node < 0;
   if (body ? point.body < 0 || point.body >= bodies : point.node >= nodes) {
     throw std::invalid_argument("a recorded point names no node or body of the structure");
@@ -35,7 +54,8 @@ OutputPoint FrameMotionComponent(const FrameModel& model, const FrameRecordPoint
 FrameTransientResult RunFrameTransient(const FrameModel& model, const FrameLoadCase& loads,
                                        const TransientOptions& options,
                                        const std::vector<FrameRecordPoint>& record,
-                                       NonlinearForce* force, const FrameDrives& drives) {
+                                       NonlinearForce* force, const FrameDrives& drives,
+                                       int watched_component) {
   options.Validate();
   if (record.empty()) throw std::invalid_argument("a frame transient records at least one point");
   // The longest member: the recorder declares a run diverged beyond a thousand of it.
@@ -77,6 +97,7 @@ FrameTransientResult RunFrameTransient(const FrameModel& model, const FrameLoadC
       out.watched_component = c;
     }
   }
+  if (watched_component >= 0) out.watched_component = watched_component;
 
   const BeamStepperSetup setup = MakeBeamStepper(model, options.Stepper(), patterns, force);
   result.status = setup.status;

@@ -10,13 +10,12 @@
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
 #include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/analysis/frame_transient_analysis.hpp"
-#include "cosmems/analysis/transient_analysis.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
 #include "csv_file.hpp"
+#include "frame_contact_output.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -33,9 +32,10 @@ const char* OutputPointName(StructureKind kind) {
 
 constexpr const char* kAxes[3] = {"x", "y", "z"};
 
-// Runs a device's frame; `results` takes the recorded points and their history.
-TransientResult RunDevice(const Scene& scene, const TransientOptions& options, int& dofs,
-                          TransientResults& results) {
+// Runs the scene's netlist; `results` takes the recorded points and their history, and the
+// contact's state and events when it has contact. A beam watches its deflection u_y.
+TransientResult RunFrame(const Scene& scene, const TransientOptions& options, int& dofs,
+                         TransientResults& results) {
   const StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure, MakeFrameCouplings(scene));
   dofs = model.FreeDofCount();
@@ -52,35 +52,21 @@ TransientResult RunDevice(const Scene& scene, const TransientOptions& options, i
     drives.electrodes = &*electrodes;
     drives.electrode_voltage = MakeElectrodeDrive(scene);
   }
-  FrameTransientResult out = RunFrameTransient(model, MakeFrameLoadCase(scene, structure), options,
-                                               record, forces.Empty() ? nullptr : &forces, drives);
+  FrameTransientResult out =
+      RunFrameTransient(model, MakeFrameLoadCase(scene, structure), options, record,
+                        forces.Empty() ? nullptr : &forces, drives, IsStraightBeam(scene) ? 1 : -1);
   for (const FrameRecordPoint& point : record) {
-    results.recorded.push_back(point.node >= 0 ? structure.nodes[point.node].name
-                                               : structure.bodies[point.body].name);
+    results.recorded.push_back(point.node >= 0   ? structure.nodes[point.node].name
+                               : point.body >= 0 ? structure.bodies[point.body].name
+                                                 : OutputPointName(scene.structure.kind));
   }
   results.history = std::move(out.history);
   results.watched_component = out.watched_component;
   if (const FrameSubstrateContact* contact = scene_forces.contact()) {
-    results.contact = contact->Summary();
+    results.contact = FrameContactResults::Of(*contact, structure).contact;
     results.contact_events = contact->events();
   }
   return out.run;
-}
-
-// Runs the scene's model with the forces it declares; `dofs` becomes its free degrees of freedom,
-// and `results` takes the contact's state and events when it has contact.
-template <int Dim>
-TransientResult RunBeam(const Scene& scene, const LoadCase& loads, const TransientOptions& options,
-                        int& dofs, TransientResults& results) {
-  const BeamModel<Dim> model(MakeBeamDescription(scene));
-  dofs = model.FreeDofCount();
-  SceneForces<Dim> forces(model, scene);
-  TransientResult out = RunTransient(model, loads, options, forces.All());
-  if (const SubstrateContact<Dim>* contact = forces.contact()) {
-    results.contact = contact->Summary();
-    results.contact_events = contact->events();
-  }
-  return out;
 }
 
 TransientResult RunRod(const Scene& scene, const LoadCase& loads, const TransientOptions& options,
@@ -117,16 +103,15 @@ std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
   const TransientOptions options = MakeTransientOptions(scene);
   const auto start = std::chrono::steady_clock::now();
   TransientResults results;
-  const TransientResult result =
-      IsDevice(scene.structure.kind)            ? RunDevice(scene, options, header.dofs, results)
-      : scene.model.theory == Theory::kCosserat ? RunRod(scene, loads, options, header.dofs)
-      : scene.model.dimension == 2 ? RunBeam<2>(scene, loads, options, header.dofs, results)
-                                   : RunBeam<3>(scene, loads, options, header.dofs, results);
+  const TransientResult result = scene.model.theory == Theory::kCosserat
+                                     ? RunRod(scene, loads, options, header.dofs)
+                                     : RunFrame(scene, options, header.dofs, results);
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   header.status = result.status;
 
   results.kind = scene.structure.kind;
+  results.beam = IsStraightBeam(scene);
   results.integrator = scene.analysis.integrator;
   results.modes = std::min(scene.model.modes, header.dofs);
   results.initial = scene.analysis.initial;
@@ -162,16 +147,12 @@ std::unique_ptr<TransientReport> TransientReport::Run(const Scene& scene) {
         "\" damps too little for contact: impacts can add energy (up to 14 % measured with "
         "average acceleration); \"generalized-alpha\" with rho_inf <= 0.6 adds none");
   }
-  const bool unloaded = IsDevice(scene.structure.kind)
-                            ? scene.loads.points.empty() && scene.loads.distributed.isZero(0.0)
-                            : loads.points.empty() && loads.distributed.isZero(0.0);
-  if (unloaded) {
+  if (scene.loads.points.empty() && loads.points.empty() && loads.distributed.isZero(0.0)) {
     header.warnings.push_back(std::string("the loads are all zero: the ") +
-                              (IsDevice(scene.structure.kind) ? "device" : "beam") +
-                              " stays at rest");
+                              (results.beam ? "beam" : "device") + " stays at rest");
   }
   // A device's substrate is checked by its static analysis, over every node and body corner.
-  if (result.status == Status::kOk && !results.contact && !IsDevice(scene.structure.kind)) {
+  if (result.status == Status::kOk && !results.contact && results.beam) {
     header.WarnIfThroughSubstrate(
         std::string("the ") + OutputPointName(scene.structure.kind) + " moves",
         result.max_toward_substrate, scene.structure.gap);
@@ -187,7 +168,7 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
                           {"batch", results_.step_time.batch}};
   json["realtime_factor"] = results_.realtime_factor;
   json["stepping_realtime_factor"] = results_.stepping_realtime_factor;
-  if (IsDevice(results_.kind)) {
+  if (!results_.beam) {
     json["displacement_max"] = results_.max_abs_uy;
     json["watched"] = {{"point", results_.recorded.front()},
                        {"component", std::string("u") + kAxes[results_.watched_component]}};
@@ -198,7 +179,7 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
   json["integrator"] = ToString(results_.integrator);
   json["time_step_s"] = results_.time_step_s;
   if (results_.contact) {
-    json["contact"] = ContactJson(*results_.contact, !IsDevice(results_.kind));
+    json["contact"] = ContactJson(*results_.contact, results_.beam);
     json["contact_events"] = ContactEventsJson(results_.contact_events);
   }
 }
@@ -221,7 +202,7 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << "realtime factor       " << Significant(results_.realtime_factor, 3)
       << " (model set-up included), " << Significant(results_.stepping_realtime_factor, 3)
       << " for the steps alone\n";
-  const std::string label = IsDevice(results_.kind)
+  const std::string label = !results_.beam
                                 ? std::string("max |u") + kAxes[results_.watched_component] +
                                       "| at " + results_.recorded.front()
                                 : std::string("max |uy| at ") + OutputPointName(results_.kind);
@@ -229,14 +210,14 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ')
       << Scientific(results_.max_abs_uy) << " m\n";
   if (!results_.contact) return;
-  PrintContact(out, *results_.contact, !IsDevice(results_.kind));
+  PrintContact(out, *results_.contact, results_.beam);
   const ContactEvents& e = results_.contact_events;
   out << "contact events        " << e.proximity_warnings << " proximity warnings, " << e.contacts
       << " contacts, " << e.stuck << " stuck, " << e.releases << " releases\n";
 }
 
 void TransientReport::WriteFiles(const std::filesystem::path& directory) const {
-  if (IsDevice(results_.kind)) {
+  if (!results_.beam) {
     std::string columns = "time_s";
     for (const std::string& name : results_.recorded) {
       for (const char* axis : kAxes) columns += "," + name + "_u" + axis + "_m";

@@ -18,6 +18,7 @@ namespace cosmems::internal {
 /// its bodies' centres and the nodes of analysis.record, and watches one component of the first.
 struct TransientResults {
   StructureKind kind = StructureKind::kCantilever;  ///< names the output point: tip or midspan
+  bool beam = true;  ///< a cantilever or a bridge: uy at its tip or midspan, as history.csv
   Integrator integrator = Integrator::kNewmark;
   int modes = 0;  ///< modes propagated by the "modal" integrator
   InitialState initial = InitialState::kRest;

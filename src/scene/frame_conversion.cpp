@@ -166,6 +166,10 @@ VoltageDrive MakeElectrodeDrive(const Scene& scene) {
 
 std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,
                                               const StructureDescription& structure) {
+  if (scene.structure.kind == StructureKind::kCantilever) {
+    return {{structure.FindNode("tip"), -1, -1, 0.0}};
+  }
+  if (scene.structure.kind == StructureKind::kBridge) return {{-1, -1, 0, 0.5}};  // midspan
   std::vector<FrameRecordPoint> named, out;
   for (const std::string& name : scene.analysis.record) {
     const int node = structure.FindNode(name);

@@ -29,6 +29,17 @@ StraightBeamDesign ChainDesign(bool bridge, int elements, int order, bool planar
   return d;
 }
 
+// A force p along y halfway along member 0: a load between nodes (FramePointLoad::member).
+FrameLoadCase MidspanForce(double p) {
+  FrameLoadCase out;
+  FramePointLoad load;
+  load.member = 0;
+  load.at = 0.5;
+  load.force = {0.0, p, 0.0};
+  out.points.push_back(load);
+  return out;
+}
+
 BeamDescription ChainAsBeam(const StraightBeamDesign& d) {
   BeamDescription beam =
       MakeStructure(d.bridge ? StructureKind::kBridge : StructureKind::kCantilever, d.length,
@@ -207,12 +218,7 @@ TEST(StraightBeamTest, AResidualCompressionLowersTheThrustThatBuckles) {
 TEST(StraightBeamTest, AForceBetweenNodesLoadsTheElementHoldingIt) {
   const double p = -2e-6;
   const double l = kReferenceLength;
-  FrameLoadCase midspan;
-  FramePointLoad load;
-  load.member = 0;
-  load.at = 0.5;
-  load.force = {0.0, p, 0.0};
-  midspan.points.push_back(load);
+  const FrameLoadCase midspan = MidspanForce(p);
 
   const FrameModel bridge(StraightBeam(ChainDesign(true, 7, 1, false)));
   const FrameStaticSolution s = SolveFrameStatic(bridge, midspan);
@@ -239,7 +245,7 @@ TEST(StraightBeamTest, AForceBetweenNodesLoadsTheElementHoldingIt) {
   EXPECT_NEAR(std::abs(r.reactions[0].moment.z()), 9.0 / 64 * pl, 1e-12 * pl);
   EXPECT_NEAR(std::abs(r.reactions[1].moment.z()), 3.0 / 64 * pl, 1e-12 * pl);
 
-  FramePointLoad outside = load;
+  FramePointLoad outside = midspan.points[0];
   outside.at = 1.5;
   EXPECT_THROW(AssembleFrameLoads(bridge, {{outside}, Eigen::Vector3d::Zero()}),
                std::invalid_argument);
@@ -288,6 +294,33 @@ TEST(StraightBeamTest, ALoadedBridgeHasTheClosedFormStressAtItsClamps) {
     for (const FrameReaction& r : s.reactions) {
       EXPECT_NEAR(r.force.y(), -0.5 * q * l, 1e-10 * std::abs(q) * l) << elements;
     }
+  }
+}
+
+// A point along a member as a transient records it (FrameMotionComponent): its weights read the
+// member's interpolation, so on the static state of a bridge pressed at midspan across eight
+// elements they give MemberMotion's u_y and the closed form P L^3 / (192 EI) at the node there
+// (1e-12 and 1e-10: round-off of a weighted sum, and of the solve), and a quarter along, inside an
+// element, MemberMotion's u_y to round-off; a member or a fraction the structure lacks throws.
+TEST(StraightBeamTest, AMemberPointIsRecordedAsTheMemberMoves) {
+  const double p = -2e-6;
+  const double l = kReferenceLength;
+  const FrameLoadCase midspan = MidspanForce(p);
+  for (bool planar : {false, true}) {
+    const FrameModel bridge(StraightBeam(ChainDesign(true, 8, 1, planar)));
+    const FrameStaticSolution s = SolveFrameStatic(bridge, midspan);
+    ASSERT_EQ(s.status, Status::kOk);
+    const double largest = p * l * l * l / (192 * test::Eiz());
+    for (double at : {0.5, 0.3}) {
+      const OutputPoint uy = FrameMotionComponent(bridge, {-1, -1, 0, at}, 1);
+      const double want = bridge.MemberMotion(s.displacement, 0, at)[1] * bridge.units().length;
+      EXPECT_NEAR(uy.Evaluate(s.displacement), want, 1e-12 * std::abs(largest)) << at;
+      if (at == 0.5) {
+        EXPECT_NEAR(want, largest, 1e-10 * std::abs(largest));
+      }
+    }
+    EXPECT_THROW(FrameMotionComponent(bridge, {-1, -1, 1, 0.5}, 1), std::invalid_argument);
+    EXPECT_THROW(FrameMotionComponent(bridge, {-1, -1, 0, 1.5}, 1), std::invalid_argument);
   }
 }
 

@@ -41,7 +41,8 @@ struct FrameTransientResult {
 
 /// The displacement component c (0, 1, 2: global x, y, z) of a recorded point as a linear
 /// functional of the reduced displacement: a body's centre reads its own degree of freedom, a
-/// node on a body or free reads its carrier's motion through the node's transform.
+/// node on a body or free reads its carrier's motion through the node's transform, a point
+/// along a member its element's interpolation (FrameModel::MemberMotion).
 OutputPoint FrameMotionComponent(const FrameModel& model, const FrameRecordPoint& point, int c);
 
 /// A transient run of a frame under `loads` (one spatial pattern times the time function) by
@@ -54,11 +55,12 @@ OutputPoint FrameMotionComponent(const FrameModel& model, const FrameRecordPoint
 /// takes its Newton path, the modal path holds the force over each step, and a static start
 /// solves the nonlinear statics. `drives` add the forces that voltages drive, from t = 0 on
 /// whatever the start (at each step their amplitude is V(t)^2 at the step's end); the watched
-/// component is then the one the loads and the drives' mean forces move most.
+/// component is then the one the loads and the drives' mean forces move most, unless
+/// `watched_component` (0, 1, 2) names it (a beam's deflection u_y).
 FrameTransientResult RunFrameTransient(const FrameModel& model, const FrameLoadCase& loads,
                                        const TransientOptions& options,
                                        const std::vector<FrameRecordPoint>& record,
                                        NonlinearForce* force = nullptr,
-                                       const FrameDrives& drives = {});
+                                       const FrameDrives& drives = {}, int watched_component = -1);
 
 }  // namespace cosmems

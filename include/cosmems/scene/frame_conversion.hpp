@@ -48,8 +48,9 @@ FramePullInOptions MakeFramePullInOptions(const Scene& scene);
 /// ac_voltage at its frequency.
 VoltageDrive MakeElectrodeDrive(const Scene& scene);
 
-/// The points a device's transient records: the nodes and bodies of analysis.record (a name that
-/// is a node and a body is the node), then every other body's centre. The first is watched.
+/// The points a transient records: a cantilever's tip, a bridge's midspan; a device's the nodes
+/// and bodies of analysis.record (a name that is a node and a body is the node), then every
+/// other body's centre. The first is watched.
 std::vector<FrameRecordPoint> MakeFrameRecord(const Scene& scene,
                                               const StructureDescription& structure);
 
