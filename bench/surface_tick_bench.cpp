@@ -27,6 +27,7 @@
 #include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/structure/folded_flexure.hpp"
+#include "cosmems/structure/straight_beam.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
 #include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/gap_force.hpp"
@@ -141,6 +142,38 @@ BENCHMARK(BM_SurfaceTick)
     ->Iterations(10 * kCycle)
     ->Unit(benchmark::kMicrosecond);
 
+// The touched cantilever's physics: the full model's path (modes = 0) or the modal one (the
+// benchmark's argument, Q = 100).
+HapticPhysicsOptions TipPressPhysics(const benchmark::State& state) {
+  HapticPhysicsOptions physics;
+  physics.modes = static_cast<int>(state.range(0));
+  physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
+  physics.damping = DampingModel::QualityFactor(100);
+  return physics;
+}
+
+// The full model and 4 and 8 modes, four cycles each.
+void TipPressRuns(benchmark::internal::Benchmark* b) {
+  b->Arg(0)
+      ->Arg(4)
+      ->Arg(8)
+      ->ArgName("modes")
+      ->Iterations(4 * kCycle)
+      ->Unit(benchmark::kMicrosecond);
+}
+
+// Times the probe pressing the tip 4 um down, past the substrate, and lifting it 3 um clear,
+// kCycle ticks a cycle.
+void PressTheTip(benchmark::State& state, HapticPhysics& touched) {
+  long tick = 0;
+  TimeTicks(state, [&] {
+    const double s = static_cast<double>(tick % kCycle) / kCycle;
+    const double depth = s < 0.5 ? 4e-6 * s / 0.5 : 4e-6 - 7e-6 * (s - 0.5) / 0.5;
+    ++tick;
+    return touched.Advance(Eigen::Vector3d(200e-6, 1e-6 - depth + 2e-6, 0.0), 0.0) == Status::kOk;
+  });
+}
+
 // The tick the hand feels (HapticBeam): the probe (coupling 5 N/m, radius 2 um) presses the tip
 // 4 um down, past the substrate, and lifts it 3 um clear, over and over (kCycle ticks a cycle),
 // with the same surface forces, on the full model's path or the modal one (`modes` modes,
@@ -148,27 +181,40 @@ BENCHMARK(BM_SurfaceTick)
 void BM_TouchedBeamTick(benchmark::State& state) {
   const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
   Surface forces = MakeSurface(model);
-  HapticPhysicsOptions physics;
-  physics.modes = static_cast<int>(state.range(0));
-  physics.path = physics.modes > 0 ? TimePath::kModal : TimePath::kNewmarkFamily;
-  physics.damping = DampingModel::QualityFactor(100);
+  const HapticPhysicsOptions physics = TipPressPhysics(state);
   HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
-  long tick = 0;
-  TimeTicks(state, [&] {
-    const double s = static_cast<double>(tick % kCycle) / kCycle;
-    const double depth = s < 0.5 ? 4e-6 * s / 0.5 : 4e-6 - 7e-6 * (s - 0.5) / 0.5;
-    ++tick;
-    return beam.Advance(Eigen::Vector3d(200e-6, 1e-6 - depth + 2e-6, 0.0), 0.0) == Status::kOk;
-  });
+  PressTheTip(state, beam);
   state.counters["stuck_events"] = static_cast<double>(forces.get<0>().events().stuck);
 }
-BENCHMARK(BM_TouchedBeamTick)
-    ->Arg(0)
-    ->Arg(4)
-    ->Arg(8)
-    ->ArgName("modes")
-    ->Iterations(4 * kCycle)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TouchedBeamTick)->Apply(TipPressRuns);
+
+// The same press on the same cantilever as the one-member netlist the command line touches
+// (StraightBeam, planar: the beam's unknowns and band) with the frame's contact, stiction and
+// Casimir force (HapticStructure): what the one structure costs against the beam's own path.
+void BM_TouchedChainTick(benchmark::State& state) {
+  StraightBeamDesign design;
+  design.elements = 20;
+  design.series_order = 0;
+  design.planar = true;
+  const FrameModel model(StraightBeam(design));
+  ContactOptions contact;
+  contact.gap = kGap;
+  contact.separation = 2e-8;
+  contact.stiction = true;
+  contact.adhesion_energy = 0.02;
+  FrameSubstrateContact substrate(model, contact);
+  FrameGapOptions under{kGap};
+  under.separation = contact.separation;
+  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, under);
+  ForceSum forces;
+  forces.Add(substrate);
+  forces.Add(casimir);
+  const HapticPhysicsOptions physics = TipPressPhysics(state);
+  HapticStructure chain(model, ProbeOptions{2e-6, 5.0}, &forces, &substrate, physics);
+  PressTheTip(state, chain);
+  state.counters["stuck_events"] = static_cast<double>(substrate.events().stuck);
+}
+BENCHMARK(BM_TouchedChainTick)->Apply(TipPressRuns);
 
 // The tick the hand feels on a device (HapticStructure): the folded-flexure resonator with
 // `elements` per beam (8 beams: 80 elements at 10, 1000 at 125) over a substrate 2 um below,

@@ -16,10 +16,6 @@ FrameContactResults FrameContactResults::Of(const FrameSubstrateContact& contact
   for (std::size_t b = 0; b < structure.bodies.size(); ++b) {
     out.bodies_stuck.push_back(contact.BodyStuck(static_cast<int>(b)));
   }
-  if (out.HasLengths()) {
-    out.contact.contact_length_m = out.members[0].contact_length_m;
-    out.contact.detached_length_m = out.members[0].detached_length_m;
-  }
   return out;
 }
 

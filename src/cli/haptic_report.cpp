@@ -9,6 +9,7 @@
 #include "contact_report.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "cosmems/session/haptic_session.hpp"
 #include "text_format.hpp"
@@ -74,7 +75,7 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   loop.UpdateFrame();
   r.contact = loop.frame().contact;
   r.has_contact = scene.effects.HasContact();
-  r.on_beam = !IsDevice(scene.structure.kind);
+  r.on_beam = IsStraightBeam(scene);
   r.events = loop.frame().events;
   r.position_scale = settings.scaling.position_scale;
   r.force_scale = settings.scaling.force_scale;

@@ -72,7 +72,7 @@ void BindModels(py::module_& m) {
       "freedom, K and the mass terms M_2j of D(w) = K - sum_j w^(2j+2) M_2j in SI, static and "
       "modal solves, and Newmark steppers.")
       .def(py::init([](const std::string& scene, const std::vector<std::string>& sets) {
-             return std::shared_ptr<SceneModel>(SceneModel::Make(LoadWith(scene, sets)));
+             return std::make_shared<SceneModel>(LoadWith(scene, sets));
            }),
            py::arg("scene"), py::arg("sets") = std::vector<std::string>{})
       .def_property_readonly("size", &SceneModel::size, "Free degrees of freedom.")

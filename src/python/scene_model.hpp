@@ -2,7 +2,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,11 +9,12 @@
 #include "cosmems/core/units.hpp"
 #include "cosmems/linalg/symmetric_band_matrix.hpp"
 #include "cosmems/scene/scene.hpp"
+#include "cosmems/structure/frame_model.hpp"
 
 namespace cosmems::python {
 
 /// The linear model of a scene's structure, whatever it is (a planar or spatial beam, a device),
-/// behind one interface: the Python module's Model. The core's matrices are in the model's
+/// on its netlist's FrameModel: the Python module's Model. The core's matrices are in the model's
 /// internal units; the conversions to SI at this interface are here, once.
 ///
 /// A free degree of freedom is a translation (m) or a rotation (rad); with S the diagonal of
@@ -23,26 +23,25 @@ namespace cosmems::python {
 /// M_j,SI = F L T^(2j+2) S^-1 M_j S^-1 for the unit force F, length L and time T.
 class SceneModel {
  public:
-  /// One free degree of freedom: "A.uy" for a named node or body, "node7.uy" otherwise.
+  /// One free degree of freedom: "A.uy" for a device's named node or body, "node7.uy" for a
+  /// beam's node (counted from its clamped end) or a device's unnamed one.
   struct Dof {
     std::string label;
     bool translation = true;
     Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< m: its node, or its body's centre
   };
 
-  virtual ~SceneModel() = default;
-
   /// The model of `scene`'s structure, its axial preload included. Throws std::invalid_argument
   /// for a structure the core refuses.
-  static std::unique_ptr<SceneModel> Make(const Scene& scene);
+  explicit SceneModel(const Scene& scene);
 
-  virtual const SymmetricBandMatrix& Stiffness() const = 0;
+  const SymmetricBandMatrix& Stiffness() const { return model_.Stiffness(); }
   /// M_2j, j = 0 ... SeriesOrder(), of D(w) = K - sum_j w^(2j+2) M_2j.
-  virtual const SymmetricBandMatrix& Mass(int j) const = 0;
-  virtual int SeriesOrder() const = 0;
-  virtual const UnitSystem& units() const = 0;
+  const SymmetricBandMatrix& Mass(int j) const { return model_.Mass(j); }
+  int SeriesOrder() const { return model_.SeriesOrder(); }
+  const UnitSystem& units() const { return model_.units(); }
   /// The `count` lowest modes of the power-series pencil (internal units, x^T M_0 x = 1).
-  virtual ModalResult Modal(int count) const = 0;
+  ModalResult Modal(int count) const;
 
   int size() const { return static_cast<int>(dofs_.size()); }
   const std::vector<Dof>& dofs() const { return dofs_; }
@@ -55,12 +54,8 @@ class SceneModel {
   /// loads, at the amplitude 1 that a transient's time function scales.
   const Eigen::VectorXd& loads_si() const { return loads_si_; }
 
- protected:
-  void SetDofs(std::vector<Dof> dofs);
-  /// The scene's loads in internal units; after SetDofs.
-  void SetLoads(Eigen::VectorXd loads);
-
  private:
+  FrameModel model_;
   std::vector<Dof> dofs_;
   Eigen::VectorXd scale_;
   Eigen::VectorXd loads_si_;

@@ -6,13 +6,10 @@
 
 #include "cosmems/analysis/comb_drive_force.hpp"
 #include "cosmems/analysis/frame_pullin_analysis.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
-#include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 
 namespace cosmems {
@@ -67,32 +64,14 @@ OpenedDevice OpenDevice(const Scene& scene) {
   return out;
 }
 
+// A structure (a beam's netlist or a device's) with every effect its scene declares: the
+// substrate's (FrameSceneForces) and its transducers at their voltages, electrodes and combs,
+// which the hand feels pull. Numbered for the probe's twist: a press off a member's axis twists
+// it.
 struct HapticSession::Touched {
-  virtual ~Touched() = default;
-  virtual HapticPhysics& physics() = 0;
-};
-
-namespace {
-
-template <int Dim>
-struct TouchedBeam final : HapticSession::Touched {
-  TouchedBeam(const Scene& scene, const ProbeOptions& probe, const HapticPhysicsOptions& options)
-      : model(MakeBeamDescription(scene),
-              Dim == 3 ? DofNumbering::kByNode : DofNumbering::kByField),
-        forces(model, scene),
-        beam(model, probe, forces.All(), forces.contact(), options) {}
-  HapticPhysics& physics() override { return beam; }
-
-  BeamModel<Dim> model;
-  SceneForces<Dim> forces;
-  HapticBeam<Dim> beam;
-};
-
-// A device with every effect its scene declares: the substrate's (FrameSceneForces) and its
-// transducers at their voltages, electrodes and combs, which the hand feels pull.
-struct TouchedDevice final : HapticSession::Touched {
-  TouchedDevice(const Scene& scene, const ProbeOptions& probe, const HapticPhysicsOptions& options)
-      : model(MakeStructureDescription(scene), MakeFrameCouplings(scene)), forces(model, scene) {
+  Touched(const Scene& scene, const ProbeOptions& probe, const HapticPhysicsOptions& options)
+      : model(MakeStructureDescription(scene), MakeFrameCouplings(scene) | FrameCouplings::kTwist),
+        forces(model, scene) {
     all.Add(forces.all());
     if (IsOn(scene.effects.electrostatic)) {
       all.Add(electrodes.emplace(MakeFrameElectrostaticForce(
@@ -103,7 +82,7 @@ struct TouchedDevice final : HapticSession::Touched {
     }
     structure.emplace(model, probe, &all, forces.contact(), options);
   }
-  HapticPhysics& physics() override { return *structure; }
+  HapticPhysics& physics() { return *structure; }
 
   FrameModel model;
   FrameSceneForces forces;
@@ -113,18 +92,10 @@ struct TouchedDevice final : HapticSession::Touched {
   std::optional<HapticStructure> structure;
 };
 
-std::unique_ptr<HapticSession::Touched> MakeTouched(const Scene& scene, const ProbeOptions& probe,
-                                                    const HapticPhysicsOptions& options) {
-  if (IsDevice(scene.structure.kind)) return std::make_unique<TouchedDevice>(scene, probe, options);
-  if (scene.model.dimension == 2) return std::make_unique<TouchedBeam<2>>(scene, probe, options);
-  return std::make_unique<TouchedBeam<3>>(scene, probe, options);
-}
-
-}  // namespace
-
 HapticSession::HapticSession(const Scene& scene, OpenedDevice device, HapticPhysicsOptions physics)
     : opened_(std::move(device)),
-      touched_(MakeTouched(scene, opened_.settings.probe, AtSceneRate(scene, physics))),
+      touched_(
+          std::make_unique<Touched>(scene, opened_.settings.probe, AtSceneRate(scene, physics))),
       loop_(touched_->physics(), LoopOptions(opened_)) {}
 
 HapticSession::~HapticSession() { Stop(); }

@@ -65,6 +65,15 @@ Eigen::Matrix<double, 6, 1> NodeMotion(const HapticFrame& frame, const FrameMesh
   return q;
 }
 
+Eigen::Vector3d ElementPointMotion(const HapticFrame& frame, const FrameMesh& mesh, int element,
+                                   double xi) {
+  const FrameMesh::Element& e = mesh.elements[element];
+  const Eigen::Vector3d& start = mesh.nodes[e.from].position;
+  const Section at = SectionAt(e, NodeMotion(frame, mesh, e.from), NodeMotion(frame, mesh, e.to),
+                               start, RectangularSection{}, xi);
+  return at.centre - (start + xi * e.length * e.axes.row(0).transpose());
+}
+
 void BuildDeviceMesh(const HapticFrame& frame, const FrameMesh& mesh,
                      const StructureDescription& structure, const DisplaySpace& space,
                      Mesh& members, Mesh& bodies, int samples_per_element) {

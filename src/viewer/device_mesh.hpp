@@ -11,6 +11,11 @@ namespace cosmems::viewer {
 /// with r its offset from a body's centre, as the model moves it.
 Eigen::Matrix<double, 6, 1> NodeMotion(const HapticFrame& frame, const FrameMesh& mesh, int node);
 
+/// The displacement [m] of the point at `xi` (0..1) along `element`'s axis in `frame`: the
+/// element's Hermite cubics across, linear along, as BuildDeviceMesh draws it.
+Eigen::Vector3d ElementPointMotion(const HapticFrame& frame, const FrameMesh& mesh, int element,
+                                   double xi);
+
 /// A device as the display draws it at `frame`'s carrier motion, in `space` (filled after
 /// clearing, storage reused frame after frame):
 /// - each member element into `members`, `samples_per_element` blocks of its section (thickness

@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "beam_mesh.hpp"
 #include "comb_mesh.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
 #include "cosmems/scene/device_target.hpp"
@@ -79,15 +78,23 @@ class Window {
   GLFWwindow* window_ = nullptr;
 };
 
-// What the display needs of a device scene besides the frames: its netlist, the mesh whose
-// carriers the frames move, its combs and the node or body the built-in motions press
-// (device.target, default the first body), whose deflection the plot follows.
-struct DrawnDevice {
-  explicit DrawnDevice(const Scene& scene)
+// What the display needs of a scene besides the frames: its netlist (a beam's one member or a
+// device's), the mesh whose carriers the frames move, its combs and the point whose deflection
+// the plot follows: a device's device.target (default its first body), a cantilever's tip, a
+// bridge's midspan.
+struct DrawnStructure {
+  explicit DrawnStructure(const Scene& scene)
       : structure(MakeStructureDescription(scene)),
         mesh(structure),
-        combs(MakeCombDrives(scene, structure)) {
-    const std::string target = DeviceTarget(scene, structure);
+        combs(MakeCombDrives(scene, structure)),
+        beam(IsStraightBeam(scene)) {
+    if (scene.structure.kind == StructureKind::kBridge) {
+      const int elements = structure.members.front().elements;
+      target_element = std::min(elements - 1, elements / 2);
+      target_xi = 0.5 * elements - target_element;
+      return;
+    }
+    const std::string target = beam ? std::string("tip") : DeviceTarget(scene, structure);
     target_body = structure.FindBody(target);
     target_node = structure.FindNode(target);
   }
@@ -96,19 +103,17 @@ struct DrawnDevice {
   double TargetDeflection(const HapticFrame& frame) const {
     if (target_node >= 0) return NodeMotion(frame, mesh, target_node)[1];
     if (target_body >= 0) return frame.carrier_motion_m(1, mesh.body_carrier[target_body]);
+    if (target_element >= 0) return ElementPointMotion(frame, mesh, target_element, target_xi)[1];
     return 0.0;
   }
 
   StructureDescription structure;
   FrameMesh mesh;
   std::vector<CombDrive> combs;
-  int target_body = -1, target_node = -1;
+  bool beam;
+  int target_body = -1, target_node = -1, target_element = -1;
+  double target_xi = 0.0;
 };
-
-std::optional<DrawnDevice> DeviceOf(const Scene& scene) {
-  if (!IsDevice(scene.structure.kind)) return std::nullopt;
-  return DrawnDevice(scene);
-}
 
 // The viewer's state between frames.
 class ViewerApp {
@@ -117,7 +122,7 @@ class ViewerApp {
       : options_(options),
         headless_(!options.screenshot.empty()),
         scene_(Load({})),
-        device_(DeviceOf(scene_)),
+        drawn_(std::make_unique<DrawnStructure>(scene_)),
         settings_(ModelSettings::FromScene(scene_, HapticPhysicsOptions{})),
         panel_(settings_),
         camera_(DefaultCamera(scene_, space_)) {}
@@ -186,7 +191,7 @@ class ViewerApp {
       settings_ = draft;
       StartSession(next);
       scene_ = next;
-      device_ = DeviceOf(scene_);
+      drawn_ = std::make_unique<DrawnStructure>(scene_);
       error_.clear();
     } catch (const std::exception& e) {
       error_ = e.what();
@@ -235,22 +240,17 @@ class ViewerApp {
 
     session_->UpdateFrame();
     const HapticFrame& frame = session_->frame();
-    plots_.Add(static_cast<float>(1e6 * Deflection(frame)),
+    plots_.Add(static_cast<float>(1e6 * drawn_->TargetDeflection(frame)),
                static_cast<float>(1e6 * frame.probe_force_n.norm()));
 
     const Stage stage = BuildStage(scene_, space_);
-    double size = scene_.structure.length;
-    if (device_) {
-      BuildDeviceMesh(frame, device_->mesh, device_->structure, space_, beam_, bodies_);
-      for (const CombDrive& comb : device_->combs) {
-        AddCombFingers(comb, device_->structure.bodies[comb.body], CombHalf::kMoving,
-                       frame.carrier_motion_m.col(device_->mesh.body_carrier[comb.body]), space_,
-                       bodies_);
-      }
-      size = FootprintOf(device_->structure).Extent();
-    } else {
-      BuildBeamMesh(frame, scene_.structure.width, scene_.structure.thickness, space_, beam_);
+    BuildDeviceMesh(frame, drawn_->mesh, drawn_->structure, space_, beam_, bodies_);
+    for (const CombDrive& comb : drawn_->combs) {
+      AddCombFingers(comb, drawn_->structure.bodies[comb.body], CombHalf::kMoving,
+                     frame.carrier_motion_m.col(drawn_->mesh.body_carrier[comb.body]), space_,
+                     bodies_);
     }
+    const double size = FootprintOf(drawn_->structure).Extent();
     const HapticSettings& settings = session_->opened().settings;
     BuildStylus(frame.probe_m, settings.probe.radius, 0.25 * size, space_, stylus_);
     renderer.BeginScene(width, height, viewport,
@@ -259,7 +259,7 @@ class ViewerApp {
     renderer.Draw(stage.electrode, palette::kElectrode);
     renderer.Draw(stage.supports, palette::kSupport);
     renderer.Draw(beam_, palette::kBeam);
-    if (device_) renderer.Draw(bodies_, palette::kBeam);
+    renderer.Draw(bodies_, palette::kBeam);
     renderer.Draw(stylus_, palette::kStylus);
     renderer.EndScene(width, height);
 
@@ -276,21 +276,13 @@ class ViewerApp {
     status.frame_interval_max_ms = 1e3 * longest_s;
     status.error = error_;
     const PanelActions actions = panel_.Draw(status, plots_, space_, static_cast<float>(height));
-    DrawSurfaceWarning(frame.contact, device_ ? "device" : "beam", viewport);
+    DrawSurfaceWarning(frame.contact, drawn_->beam ? "beam" : "device", viewport);
     DrawViewCaption(viewport, space_.exaggeration, session_->hand() != nullptr);
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
     if (actions.reset) session_->RequestReset();
     if (actions.rebuild) Rebuild();
-  }
-
-  // What the plot follows [m]: a cantilever's tip, a bridge's midspan, a device's target.
-  double Deflection(const HapticFrame& frame) const {
-    if (device_) return device_->TargetDeflection(frame);
-    const int nodes = static_cast<int>(frame.deflection_m.size());
-    return frame
-        .deflection_m[scene_.structure.kind == StructureKind::kCantilever ? nodes - 1 : nodes / 2];
   }
 
   ViewerFigures Finish(GLFWwindow* window, std::uint64_t frames, double rate_hz, double longest_s,
@@ -325,7 +317,7 @@ class ViewerApp {
   const ViewerOptions& options_;
   const bool headless_;
   Scene scene_;
-  std::optional<DrawnDevice> device_;
+  std::unique_ptr<DrawnStructure> drawn_;
   ModelSettings settings_;
   Panel panel_;
   DisplaySpace space_;

@@ -217,6 +217,32 @@ TEST(HapticStructureTest, ACantileverMemberIsPressedAsTheValidatedBeam) {
   EXPECT_EQ(structure.DofCount(), 6 * 20);
 }
 
+// A press off the axis twists a spatial member when its numbering keeps the twist
+// (FrameCouplings::kTwist): pressed at the tip z off the axis, the cantilever's upper face gives
+// as bending and torsion in series, 1/k = L^3/(3 E I) + z^2 L/(G J) (about 1 % from the twist
+// here), felt in series with the coupling. The elements are exact for a tip force and a uniform
+// torque, so both hold to Newton's tight tolerance (1e-9). Numbered without the twist, the
+// same press feels the bending alone.
+TEST(HapticStructureTest, AnOffAxisPressTwistsASpatialMember) {
+  const double k_c = 5.0, depth = 0.3e-6, z = 8e-6;
+  const RectangularSection section = test::ReferenceSection();
+  const Material silicon = test::Silicon();
+  const double l = test::kReferenceLength;
+  const double bending = l * l * l / (3.0 * silicon.young_modulus * section.SecondMomentZ());
+  const double twist = z * z * l / (silicon.ShearModulus() * section.TorsionConstant());
+  const Eigen::Vector3d centre = test::OverTip(depth) + Eigen::Vector3d(0.0, 0.0, z);
+  for (const FrameCouplings couplings : {FrameCouplings::kTwist, FrameCouplings::kLinear}) {
+    const FrameModel model(CantileverFrame(), couplings);
+    HapticStructure structure(model, ProbeOptions{test::kProbeRadius, k_c}, nullptr, nullptr,
+                              test::TightPhysics());
+    for (int tick = 0; tick < 6; ++tick) ASSERT_EQ(structure.Advance(centre, 0.0), Status::kOk);
+    const double compliance = couplings == FrameCouplings::kTwist ? bending + twist : bending;
+    const double series = k_c / (1.0 + k_c * compliance);
+    EXPECT_NEAR(structure.local_model().stiffness_n_per_m, series, 1e-9 * series);
+    EXPECT_NEAR(structure.local_model().force_n, series * depth, 1e-9 * series * depth);
+  }
+}
+
 // The probe pressing the point `face_m` of an upper face `depth` deep from above, on the
 // structure, until it has settled (rho_inf = 0 leaves the static state after a few ticks, the
 // devices' first modes being near 100 kHz): the force and the local model's stiffness.

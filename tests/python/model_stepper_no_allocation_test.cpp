@@ -14,7 +14,7 @@ namespace {
 // re-read after writes through its arrays, and the integrator's step, all without the heap.
 TEST(NoAllocationTest, PythonStepperStepsAllocateNothing) {
   const std::shared_ptr<const python::SceneModel> model =
-      python::SceneModel::Make(LoadScene("cantilever"));
+      std::make_shared<const python::SceneModel>(LoadScene("cantilever"));
   python::ModelStepper stepper(model, 1e-7, GeneralizedAlphaParameters::Newmark(0.25, 0.5),
                                {1e3, 1e-9});
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(model->size());

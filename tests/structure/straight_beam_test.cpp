@@ -106,6 +106,34 @@ TEST(StraightBeamTest, APrestressedSpatialChainIsTheSpatialBeam) {
   }
 }
 
+// The twist a probe adds (FrameCouplings::kTwist) numbers the spatial chain's u_y, r_z and r_x
+// together: three unknowns a node where the bending alone has two, so the band's half-width
+// grows from 3 to 5 (the next node's group lies within it), the unknowns stay six a node, and
+// the linear answers do not move (1e-10: the same pencil in another order). A planar chain has
+// no twist: its numbering does not change.
+TEST(StraightBeamTest, TheProbesTwistWidensTheSpatialChainsBandByOneUnknownANode) {
+  const StraightBeamDesign spatial = ChainDesign(false, 16, 1, false);
+  const FrameModel bending(StraightBeam(spatial));
+  const FrameModel twisting(StraightBeam(spatial), FrameCouplings::kTwist);
+  EXPECT_EQ(bending.Stiffness().bandwidth(), 3);
+  EXPECT_EQ(twisting.Stiffness().bandwidth(), 5);
+  EXPECT_EQ(twisting.FreeDofCount(), bending.FreeDofCount());
+  EXPECT_TRUE(twisting.Coupled(static_cast<int>(NodalDof::kUy), static_cast<int>(NodalDof::kRx)));
+  EXPECT_FALSE(bending.Coupled(static_cast<int>(NodalDof::kUy), static_cast<int>(NodalDof::kRx)));
+  EXPECT_FALSE(twisting.Coupled(static_cast<int>(NodalDof::kUz), static_cast<int>(NodalDof::kRx)));
+  const FrameModalResult a = SolveFrameModal(bending, ChainModeCount(8));
+  const FrameModalResult b = SolveFrameModal(twisting, ChainModeCount(8));
+  ASSERT_EQ(a.modal.status, Status::kOk);
+  ASSERT_EQ(b.modal.status, Status::kOk);
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_NEAR(b.modal.modes[i].frequency_hz, a.modal.modes[i].frequency_hz,
+                1e-10 * a.modal.modes[i].frequency_hz);
+  }
+  const StraightBeamDesign planar = ChainDesign(true, 16, 1, true);
+  EXPECT_EQ(FrameModel(StraightBeam(planar), FrameCouplings::kTwist).Stiffness().bandwidth(),
+            FrameModel(StraightBeam(planar)).Stiffness().bandwidth());
+}
+
 // Against the exact frequencies of EI w'''' - N w'' = rho A w^2 w (the characteristic
 // determinant, tests/prestressed_beam_exact.hpp): the error falls as h^4 (the exact mode is no
 // power series about the cubic under N), and 40 elements come within 2e-5 (measured on the beam

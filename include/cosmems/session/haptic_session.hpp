@@ -68,8 +68,8 @@ class HapticSession {
   HapticLoop& loop() { return loop_; }
   const HapticLoop& loop() const { return loop_; }
 
-  /// What the session touches: the scene's model, its effects and its physics (defined where
-  /// the session is built).
+  /// What the session touches: the scene's structure, its effects and its physics (defined
+  /// where the session is built).
   struct Touched;
 
  private:

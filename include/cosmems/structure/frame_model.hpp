@@ -33,9 +33,22 @@ namespace cosmems {
 /// stiffness and -N G_(j+1) to their mass terms M_2j, the power series of the prestressed
 /// element's dynamic stiffness (the highest term keeps M_2j alone).
 /// The couplings between a member's fields that the forces on a frame may add to its linear
-/// elements': none, or those of axial stretching, which ties each member's axial field to its
-/// two bendings (FrameStretchingForce). The numbering keeps apart only what never couples.
-enum class FrameCouplings { kLinear, kStretching };
+/// elements, as a set: axial stretching ties each member's axial field to its two bendings
+/// (FrameStretchingForce); a probe pressing a thickness face off the axis ties the bending
+/// across the thickness (u_y, r_z) to the twist r_x (FrameProbeContact). The numbering keeps
+/// apart only what never couples: the twist widens a straight chain's band from its bending's
+/// two unknowns a node to three, and leaves a planar device's (whose out-of-plane group holds
+/// both) as it is.
+enum class FrameCouplings : unsigned { kLinear = 0, kStretching = 1, kTwist = 2 };
+
+constexpr FrameCouplings operator|(FrameCouplings a, FrameCouplings b) {
+  return static_cast<FrameCouplings>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+
+/// Whether the set `couplings` holds `c`.
+constexpr bool Holds(FrameCouplings couplings, FrameCouplings c) {
+  return (static_cast<unsigned>(couplings) & static_cast<unsigned>(c)) != 0;
+}
 
 class FrameModel {
  public:
@@ -230,13 +243,19 @@ class FrameModel {
                                first.material.density * first.section.Area());
   }
 
-  // Whether an element's local dofs a and b may couple: one field, or, with stretching, the
-  // axial field and the bendings.
+  // Whether an element's local dofs a and b may couple: one field; with stretching, the axial
+  // field and the bendings; with the twist, the bending across the thickness and the torsion.
   bool LocalCoupled(int a, int b) const {
     const DofField fa = FieldOf(static_cast<NodalDof>(a % 6));
     const DofField fb = FieldOf(static_cast<NodalDof>(b % 6));
-    return fa == fb || (couplings_ == FrameCouplings::kStretching && fa != DofField::kTorsion &&
-                        fb != DofField::kTorsion);
+    auto pair = [&](DofField x, DofField y) {
+      return (fa == x && fb == y) || (fa == y && fb == x);
+    };
+    const bool stretching = Holds(couplings_, FrameCouplings::kStretching) &&
+                            fa != DofField::kTorsion && fb != DofField::kTorsion;
+    const bool twist =
+        Holds(couplings_, FrameCouplings::kTwist) && pair(DofField::kBendingY, DofField::kTorsion);
+    return fa == fb || stretching || twist;
   }
 
   // The groups of the six directions that some element couples: its coupled local fields

@@ -29,7 +29,7 @@ class FrameStretchingForce final : public FrameElementForce {
   /// Throws std::invalid_argument unless `model` was built with FrameCouplings::kStretching; it
   /// must outlive the force.
   explicit FrameStretchingForce(const FrameModel& model) : model_(model) {
-    if (model.couplings() != FrameCouplings::kStretching) {
+    if (!Holds(model.couplings(), FrameCouplings::kStretching)) {
       throw std::invalid_argument(
           "FrameStretchingForce: the frame must be numbered for stretching "
           "(FrameCouplings::kStretching)");

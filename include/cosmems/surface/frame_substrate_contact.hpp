@@ -328,8 +328,8 @@ class FrameSubstrateContact final : public FrameElementForce {
   }
 
   /// The state of the last committed step: free, near, touching or stuck, and when stuck its
-  /// shape (along a length or a face, or by free ends alone: the arc); a device's contact has no
-  /// lengths (MemberSummary has a member's).
+  /// shape (along a length or a face, or by free ends alone: the arc). A one-member structure's
+  /// (a beam's) has its member's lengths; a device's has none (MemberSummary has each member's).
   ContactSummary Summary() const {
     ContactSummary out;
     out.state = state_;
@@ -339,6 +339,11 @@ class FrameSubstrateContact final : public FrameElementForce {
         const int site = sites_.SiteOf(k);
         if (stuck_[k] && (site < 0 || !sites_.sites()[site].free_end)) out.shape = StuckShape::kS;
       }
+    }
+    if (model_.description().members.size() == 1) {
+      const ContactSummary member = MemberSummary(0);
+      out.contact_length_m = member.contact_length_m;
+      out.detached_length_m = member.detached_length_m;
     }
     return out;
   }
