@@ -1,19 +1,19 @@
 #pragma once
 
 // The paper's scene for the example programs: the silicon reference cantilever (200 x 20 x 2 um,
-// 20 planar elements) 2 um above the substrate with contact, stiction (0.02 J/m^2) and the
-// Casimir force, a probe tied to the stylus by a 21 N/m coupling (25 times the tip's
-// stiffness), and the hand scaled so that 1 um of the beam is 5 mm of hand and the coupling is
-// felt at half the device's renderable stiffness. The stylus starts over the tip.
+// 20 planar elements, built as its one-member netlist) 2 um above the substrate with contact,
+// stiction (0.02 J/m^2) and the Casimir force, a probe tied to the stylus by a 21 N/m coupling (25
+// times the tip's stiffness), and the hand scaled so that 1 um of the beam is 5 mm of hand and the
+// coupling is felt at half the device's renderable stiffness. The stylus starts over the tip.
 #include <memory>
 
-#include "cosmems/beam/beam_model.hpp"
-#include "cosmems/beam/force_tuple.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
-#include "cosmems/surface/gap_force.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
+#include "cosmems/structure/straight_beam.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
-#include "cosmems/surface/substrate_contact.hpp"
 
 namespace cosmems::example {
 
@@ -22,18 +22,16 @@ class TouchableCantilever {
   static constexpr double kLength = 200e-6, kThickness = 2e-6, kGap = 2e-6;
 
   TouchableCantilever(const DeviceSpecs& specs, PhysicsThread physics)
-      : model_(MakeStructure(StructureKind::kCantilever, kLength, Material{169e9, 2330.0, 0.22},
-                             RectangularSection{20e-6, kThickness}, 20, 0)),
-        forces_(SubstrateContact<2>(model_, Contact()),
-                GapForce<2, CasimirPressure>(
-                    model_, CasimirPressure{},
-                    GapSpan{kGap, 0.0, kLength}.WithSeparation(Contact().separation))) {
+      : model_(StraightBeam(Design())),
+        contact_(model_, Contact()),
+        casimir_(model_, CasimirPressure{}, Under()) {
+    forces_.Add(contact_);
+    forces_.Add(casimir_);
     const double k_tip = 3.0 * 169e9 * (20e-6 * 8e-18 / 12.0) / (kLength * kLength * kLength);
     ProbeOptions probe{kThickness, 25.0 * k_tip};
     HapticPhysicsOptions physics_options;
     physics_options.tick_s = 1.0 / specs.nominal_rate_hz;  // one physics tick a servo tick
-    beam_ = std::make_unique<HapticBeam<2>>(model_, probe, &forces_, &forces_.get<0>(),
-                                            physics_options);
+    beam_ = std::make_unique<HapticStructure>(model_, probe, &forces_, &contact_, physics_options);
     HapticLoopOptions options;
     options.physics = physics;
     options.scaling.position_scale = 5000.0;
@@ -49,6 +47,16 @@ class TouchableCantilever {
   HapticLoop& loop() { return *loop_; }
 
  private:
+  static StraightBeamDesign Design() {
+    StraightBeamDesign d;
+    d.length = kLength;
+    d.material = Material{169e9, 2330.0, 0.22};
+    d.section = RectangularSection{20e-6, kThickness};
+    d.elements = 20;
+    d.series_order = 0;  // Hermite elements
+    d.planar = true;
+    return d;
+  }
   static ContactOptions Contact() {
     ContactOptions c;
     c.gap = kGap;
@@ -57,10 +65,18 @@ class TouchableCantilever {
     c.adhesion_energy = 0.02;
     return c;
   }
+  // The Casimir pressure held at the asperities' height, where the contact holds the beam.
+  static FrameGapOptions Under() {
+    FrameGapOptions under{kGap};
+    under.separation = Contact().separation;
+    return under;
+  }
 
-  BeamModel<2> model_;
-  ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>> forces_;
-  std::unique_ptr<HapticBeam<2>> beam_;
+  FrameModel model_;
+  FrameSubstrateContact contact_;
+  FrameGapForce<CasimirPressure> casimir_;
+  ForceSum forces_;
+  std::unique_ptr<HapticStructure> beam_;
   std::unique_ptr<HapticLoop> loop_;
 };
 

@@ -1,14 +1,14 @@
-// The servo tick of the haptic scene allocates nothing: the stylus presses the cantilever's tip
-// onto the substrate (contact, stiction, Casimir), holds and lifts off, with the physics inside
-// the tick and the safety layer after it; and the same for a device, a folded flexure's shuttle
-// pressed toward the substrate under the Casimir force.
+// The servo tick of the haptic scene allocates nothing: the stylus presses the tip of the
+// cantilever's netlist (as the command line touches it) onto the substrate (contact, stiction,
+// Casimir), holds and lifts off, with the physics inside the tick and the safety layer after it;
+// and the same for a device, a folded flexure's shuttle pressed toward the substrate under the
+// Casimir force.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "allocation_counter.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/haptics/safety_layer.hpp"
@@ -24,13 +24,13 @@ namespace {
 class HapticNoAllocationTest : public ::testing::TestWithParam<TimePath> {};
 
 TEST_P(HapticNoAllocationTest, ServoTicksThroughPressStickAndLiftAllocateNothing) {
-  const BeamModel<2> model = test::HapticCantilever();
-  test::HapticSurface forces = test::MakeHapticSurface(model);
+  const FrameModel model(test::HapticCantileverNetlist());
+  test::HapticNetlistSurface forces(model);
   HapticPhysicsOptions physics;
   physics.path = GetParam();
   physics.modes = 8;
   physics.damping = DampingModel::QualityFactor(100);
-  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
+  HapticStructure beam(model, ProbeOptions{2e-6, 5.0}, &forces.all, &forces.contact, physics);
   HapticLoopOptions options;
   options.physics = PhysicsThread::kServo;  // the test ticks the loop itself, unpaced
   options.scaling.position_scale = 5000.0;

@@ -222,7 +222,8 @@ TEST(HapticStructureTest, ACantileverMemberIsPressedAsTheValidatedBeam) {
 // as bending and torsion in series, 1/k = L^3/(3 E I) + z^2 L/(G J) (about 1 % from the twist
 // here), felt in series with the coupling. The elements are exact for a tip force and a uniform
 // torque, so both hold to Newton's tight tolerance (1e-9). Numbered without the twist, the
-// same press feels the bending alone.
+// same press feels the bending alone; the beam's HapticBeam numbered node by node feels the
+// twist too.
 TEST(HapticStructureTest, AnOffAxisPressTwistsASpatialMember) {
   const double k_c = 5.0, depth = 0.3e-6, z = 8e-6;
   const RectangularSection section = test::ReferenceSection();
@@ -241,6 +242,14 @@ TEST(HapticStructureTest, AnOffAxisPressTwistsASpatialMember) {
     EXPECT_NEAR(structure.local_model().stiffness_n_per_m, series, 1e-9 * series);
     EXPECT_NEAR(structure.local_model().force_n, series * depth, 1e-9 * series * depth);
   }
+  // The beam's own API twists alike when numbered node by node.
+  const BeamModel<3> beam_model(
+      MakeStructure(StructureKind::kCantilever, l, silicon, section, 20, 0), DofNumbering::kByNode);
+  HapticBeam<3> beam(beam_model, ProbeOptions{test::kProbeRadius, k_c}, nullptr, nullptr,
+                     test::TightPhysics());
+  for (int tick = 0; tick < 6; ++tick) ASSERT_EQ(beam.Advance(centre, 0.0), Status::kOk);
+  const double series = k_c / (1.0 + k_c * (bending + twist));
+  EXPECT_NEAR(beam.local_model().stiffness_n_per_m, series, 1e-9 * series);
 }
 
 // The probe pressing the point `face_m` of an upper face `depth` deep from above, on the

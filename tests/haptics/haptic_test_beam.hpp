@@ -1,12 +1,17 @@
 #pragma once
 
 // The reference cantilever (silicon, 200 x 20 x 2 um, 20 planar elements) the haptic tests
-// touch, with its tip stiffness 3EI/L^3.
+// touch, as a BeamModel and as the one-member netlist the command line touches, with its tip
+// stiffness 3EI/L^3 and the paper's surface under each.
 #include "cosmems/beam/beam_model.hpp"
+#include "cosmems/beam/force_sum.hpp"
 #include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/haptics/device_types.hpp"
 #include "cosmems/haptics/hand_scaling.hpp"
 #include "cosmems/haptics/haptic_physics.hpp"
+#include "cosmems/structure/straight_beam.hpp"
+#include "cosmems/surface/frame_gap_force.hpp"
+#include "cosmems/surface/frame_substrate_contact.hpp"
 #include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
 #include "cosmems/surface/substrate_contact.hpp"
@@ -56,17 +61,63 @@ inline Eigen::Vector3d OverTip(double depth) {
   return Eigen::Vector3d(kReferenceLength, 0.5 * kReferenceThickness - depth + kProbeRadius, 0.0);
 }
 
-inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
+/// The paper's contact and stiction: the substrate 2 um below, 0.02 J/m^2, asperities 20 nm high.
+inline ContactOptions HapticContact() {
   ContactOptions contact;
   contact.gap = kHapticGap;
   contact.separation = 2e-8;
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
+  return contact;
+}
+
+inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
+  const ContactOptions contact = HapticContact();
   return HapticSurface(
       SubstrateContact<2>(model, contact),
       GapForce<2, CasimirPressure>(
           model, CasimirPressure{},
           GapSpan{kHapticGap, 0.0, kReferenceLength}.WithSeparation(contact.separation)));
+}
+
+/// The reference cantilever as the command line touches it: its one-member netlist (StraightBeam,
+/// Hermite elements), planar (u_x, u_y, r_z: model.dimension = 2) or spatial.
+inline StructureDescription HapticCantileverNetlist(bool planar = true) {
+  StraightBeamDesign d;
+  d.length = kReferenceLength;
+  d.material = Silicon();
+  d.section = ReferenceSection();
+  d.elements = 20;
+  d.series_order = 0;
+  d.planar = planar;
+  return StraightBeam(d);
+}
+
+/// The paper's surface under a netlist, as a scene builds it: the contact and stiction, and the
+/// Casimir force held at the asperities' height. Not movable: `all` holds the two.
+struct HapticNetlistSurface {
+  explicit HapticNetlistSurface(const FrameModel& model)
+      : contact(model, HapticContact()), casimir(model, CasimirPressure{}, Under()) {
+    all.Add(contact);
+    all.Add(casimir);
+  }
+  HapticNetlistSurface(const HapticNetlistSurface&) = delete;
+  HapticNetlistSurface& operator=(const HapticNetlistSurface&) = delete;
+
+  static FrameGapOptions Under() {
+    FrameGapOptions under{kHapticGap};
+    under.separation = HapticContact().separation;
+    return under;
+  }
+
+  FrameSubstrateContact contact;
+  FrameGapForce<CasimirPressure> casimir;
+  ForceSum all;
+};
+
+/// The tip's u_y [m] in a frame of the netlist's HapticStructure (node "tip" is node 1).
+inline double NetlistTipDeflection(const FrameModel& model, const HapticFrame& frame) {
+  return frame.carrier_motion_m(1, model.mesh().nodes[1].carrier);
 }
 
 }  // namespace cosmems::test

@@ -1,6 +1,7 @@
 // Hard cases of the touch: a stylus that jumps 10 mm, sends NaN or stalls, driving the paper's
 // scene (contact, stiction and the Casimir force) through the whole servo path (ScriptedDevice,
-// HapticLoop with the physics in the tick, HapticBeam, SafetyLayer), with the physics in 10
+// HapticLoop with the physics in the tick, HapticStructure on the cantilever's netlist,
+// SafetyLayer), with the physics in 10
 // steps of 100 us a tick or in one step of 1 ms. Every force sent stays finite, within the
 // device's limit and its slew limit; every beam state stays finite; a tick whose physics fails
 // says so and its force goes to zero along the slew limit.
@@ -13,8 +14,8 @@
 #include <vector>
 
 #include "cosmems/haptics/built_in_specs.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_loop.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptics/haptic_test_beam.hpp"
 #include "haptics/reference_touch.hpp"
@@ -93,7 +94,7 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   HapticPhysicsOptions physics;
   physics.substeps = substeps;
   test::ReferenceTouch touch(physics);
-  HapticBeam<2>& beam = touch.beam;
+  HapticStructure& beam = touch.beam;
   HapticLoop& loop = touch.loop;
   ScriptedOptions scripted;
   scripted.clock = ScriptedClock::kManual;
@@ -107,7 +108,7 @@ TEST_P(StylusTest, EveryForceStaysBoundedAndEveryFailedTickSaysSo) {
   long failed = 0, non_finite_status = 0;
   while (device.Step(1) > 0) {
     beam.Fill(frame);
-    ASSERT_TRUE(frame.deflection_m.allFinite()) << "tick " << device.ticks();
+    ASSERT_TRUE(frame.carrier_motion_m.allFinite()) << "tick " << device.ticks();
     ASSERT_TRUE(frame.probe_force_n.allFinite()) << "tick " << device.ticks();
     if (frame.status != Status::kOk) {
       ++failed;
@@ -158,13 +159,13 @@ INSTANTIATE_TEST_SUITE_P(
     StylusName);
 
 // A NaN probe position handed to the physics directly (HapticLoop never hands it one: the device
-// shows its client no state it got wrong): the probe's faces come out NaN, the tick is refused as
-// non-finite with the beam kept where it was and the local model invalid, and the next tick with
-// a real position runs again.
+// shows its client no state it got wrong): the tick is refused as non-finite before the probe
+// moves, with the beam kept where it was (the Casimir force alone would have moved it) and the
+// local model invalid, and the next tick with a real position runs again.
 TEST(NaNProbeTest, ANaNProbeIsRefusedAndTheNextTickRunsAgain) {
-  const BeamModel<2> model = test::HapticCantilever();
-  test::HapticSurface forces = test::MakeHapticSurface(model);
-  HapticBeam<2> beam(model, ProbeOptions{test::kProbeRadius, 20.0}, &forces, &forces.get<0>());
+  const FrameModel model(test::HapticCantileverNetlist());
+  test::HapticNetlistSurface forces(model);
+  HapticStructure beam(model, ProbeOptions{test::kProbeRadius, 20.0}, &forces.all, &forces.contact);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(beam.Advance(Eigen::Vector3d(test::kReferenceLength, nan, 0.0), 0.0),
             Status::kNonFinite);

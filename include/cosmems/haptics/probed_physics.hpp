@@ -59,6 +59,13 @@ class ProbedPhysics : public HapticPhysics {
   }
 
   Status Advance(const Eigen::Vector3d& probe_m, double source_time_s) override {
+    // A position that is no position moves nothing: the tick is refused, the structure kept
+    // where it was and the local model invalid, whichever probe would have met it.
+    if (!probe_m.allFinite()) {
+      status_ = Status::kNonFinite;
+      local_.valid = false;
+      return status_;
+    }
     probe_.MoveTo(probe_m);
     // A factor kept from before the sphere touched lacks its spring, often stiffer than the
     // structure under it: the kept corrections then overshoot past the probe, where a fresh
