@@ -1,6 +1,6 @@
-// The servo client that lets a hand touch the beam: the scaled force it asks for, the same
-// history run to run with the physics in the servo tick, and the physics on its own thread
-// (also run under ThreadSanitizer in cosmems_tsan_tests), a stalled physics thread seen
+// The servo client that lets a hand touch the beam (the cantilever's netlist): the scaled force it
+// asks for, the same history run to run with the physics in the servo tick, and the physics on its
+// own thread (also run under ThreadSanitizer in cosmems_tsan_tests), a stalled physics thread seen
 // through a whole device, the paced devices' refusal of physics in the tick, and physics that
 // fails without saying so.
 #include "cosmems/haptics/haptic_loop.hpp"
@@ -14,7 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "haptic_test_beam.hpp"
 
@@ -49,8 +49,8 @@ DeviceState Stylus(const HapticLoopOptions& options, int tick) {
 }
 
 std::vector<double> ServoForces(PhysicsThread physics, int ticks) {
-  const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  const FrameModel model(test::HapticCantileverNetlist());
+  HapticStructure beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(physics);
   HapticLoop loop(beam, options);
   std::vector<double> forces;
@@ -78,8 +78,8 @@ TEST(HapticLoopTest, TheHandFeelsTheScaledSeriesSpringAndTheSameForcesEveryRun) 
 }
 
 TEST(HapticLoopTest, PhysicsOnItsOwnThreadFeedsTheServoAndTheDisplay) {
-  const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  const FrameModel model(test::HapticCantileverNetlist());
+  HapticStructure beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
   HapticLoop loop(beam, options);
   loop.StartPhysics();
@@ -140,8 +140,8 @@ class HeldStylus final : public Trajectory {
 // ticks only when told). A device started again must not take the model of the run before for a
 // fresh one either.
 TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) {
-  const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  const FrameModel model(test::HapticCantileverNetlist());
+  HapticStructure beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
   HapticLoop loop(beam, options);
   ScriptedOptions scripted;
@@ -188,8 +188,8 @@ TEST(HapticLoopTest, AStalledPhysicsThreadAndADeviceRestartBringTheForceToZero) 
 // refuses it, and an unpaced one (as fast as possible) takes it.
 TEST(HapticLoopTest, APacedDeviceRefusesPhysicsInsideTheServoTick) {
   EXPECT_EQ(HapticLoopOptions{}.physics, PhysicsThread::kOwn);
-  const BeamModel<2> model = test::HapticCantilever();
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
+  const FrameModel model(test::HapticCantileverNetlist());
+  HapticStructure beam(model, ProbeOptions{kProbeRadius, kProbeCoupling}, nullptr, nullptr);
   HapticLoop in_tick(beam, Options(PhysicsThread::kServo));
   const HapticLoopOptions options = Options(PhysicsThread::kOwn);
   ScriptedOptions paced;
@@ -279,9 +279,9 @@ TEST(PeriodicDeadlineTest, SkippingDropsTheDeadlinesAStallPassed) {
 // The panel's "Reset Failure": asked for from another thread while the beam lies stuck where the
 // stylus laid it (pressed at the tip, swept to midspan, lifted), the next physics tick frees it.
 TEST(HapticLoopTest, AResetRequestedFromAnotherThreadFreesTheStuckBeam) {
-  const BeamModel<2> model = test::HapticCantilever();
-  test::HapticSurface forces = test::MakeHapticSurface(model);
-  HapticBeam<2> beam(model, ProbeOptions{kProbeRadius, 50.0}, &forces, &forces.get<0>());
+  const FrameModel model(test::HapticCantileverNetlist());
+  test::HapticNetlistSurface forces(model);
+  HapticStructure beam(model, ProbeOptions{kProbeRadius, 50.0}, &forces.all, &forces.contact);
   const HapticLoopOptions options = Options(PhysicsThread::kServo);
   HapticLoop loop(beam, options);
   int tick = 0;
@@ -309,7 +309,7 @@ TEST(HapticLoopTest, AResetRequestedFromAnotherThreadFreesTheStuckBeam) {
   touch(0.5 * length, -5e-6);
   ASSERT_TRUE(loop.UpdateFrame());
   EXPECT_EQ(loop.frame().contact.state, ContactState::kFree);
-  EXPECT_LT(std::abs(loop.frame().deflection_m[20]), 1e-3 * test::kHapticGap);
+  EXPECT_LT(std::abs(test::NetlistTipDeflection(model, loop.frame())), 1e-3 * test::kHapticGap);
   EXPECT_EQ(loop.failed_ticks(), 0u);
 }
 

@@ -2,19 +2,16 @@
 
 // The reference cantilever (silicon, 200 x 20 x 2 um, 20 planar elements) the haptic tests
 // touch, as a BeamModel and as the one-member netlist the command line touches, with its tip
-// stiffness 3EI/L^3 and the paper's surface under each.
+// stiffness 3EI/L^3 and the paper's surface under the netlist.
 #include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/force_sum.hpp"
-#include "cosmems/beam/force_tuple.hpp"
 #include "cosmems/haptics/device_types.hpp"
 #include "cosmems/haptics/hand_scaling.hpp"
 #include "cosmems/haptics/haptic_physics.hpp"
 #include "cosmems/structure/straight_beam.hpp"
 #include "cosmems/surface/frame_gap_force.hpp"
 #include "cosmems/surface/frame_substrate_contact.hpp"
-#include "cosmems/surface/gap_force.hpp"
 #include "cosmems/surface/gap_pressures.hpp"
-#include "cosmems/surface/substrate_contact.hpp"
 #include "test_beams.hpp"
 
 namespace cosmems::test {
@@ -29,9 +26,7 @@ inline double ReferenceTipStiffness() {
   return 3.0 * 169e9 * inertia / (kReferenceLength * kReferenceLength * kReferenceLength);
 }
 
-/// The paper's surface: contact and stiction (0.02 J/m^2, asperities 20 nm high) with a substrate
-/// 2 um below, and the Casimir force.
-using HapticSurface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
+/// The paper's substrate: 2 um below the beam.
 constexpr double kHapticGap = 2e-6;
 /// The stylus's probe (radius as the beam is thick) and its coupling spring, N/m.
 constexpr double kProbeRadius = 2e-6, kProbeCoupling = 5.0;
@@ -69,15 +64,6 @@ inline ContactOptions HapticContact() {
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
   return contact;
-}
-
-inline HapticSurface MakeHapticSurface(const BeamModel<2>& model) {
-  const ContactOptions contact = HapticContact();
-  return HapticSurface(
-      SubstrateContact<2>(model, contact),
-      GapForce<2, CasimirPressure>(
-          model, CasimirPressure{},
-          GapSpan{kHapticGap, 0.0, kReferenceLength}.WithSeparation(contact.separation)));
 }
 
 /// The reference cantilever as the command line touches it: its one-member netlist (StraightBeam,
