@@ -9,6 +9,7 @@ FrameContactResults FrameContactResults::Of(const FrameSubstrateContact& contact
                                             const StructureDescription& structure) {
   FrameContactResults out;
   out.declared = true;
+  out.has_lengths = HasContactLengths(structure);
   out.contact = contact.Summary();
   for (std::size_t m = 0; m < structure.members.size(); ++m) {
     out.members.push_back(contact.MemberSummary(static_cast<int>(m)));
@@ -21,7 +22,7 @@ FrameContactResults FrameContactResults::Of(const FrameSubstrateContact& contact
 
 void AddFrameContact(const StructureDescription& structure, const FrameContactResults& results,
                      nlohmann::ordered_json& json) {
-  json["contact"] = ContactJson(results.contact, results.HasLengths());
+  json["contact"] = ContactJson(results.contact, results.has_lengths);
   nlohmann::ordered_json members = nlohmann::ordered_json::array();
   for (std::size_t m = 0; m < results.members.size(); ++m) {
     const ContactSummary& member = results.members[m];
@@ -40,7 +41,7 @@ void AddFrameContact(const StructureDescription& structure, const FrameContactRe
 
 void PrintFrameContact(const StructureDescription& structure, const FrameContactResults& results,
                        std::ostream& out) {
-  PrintContact(out, results.contact, results.HasLengths());
+  PrintContact(out, results.contact, results.has_lengths);
   for (std::size_t m = 0; m < results.members.size(); ++m) {
     const ContactSummary& member = results.members[m];
     if (!member.InContact()) continue;

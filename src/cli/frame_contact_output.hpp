@@ -12,8 +12,15 @@ namespace cosmems::internal {
 
 /// A device against the substrate as its static and release reports show it (doc/cli.md): the
 /// device's contact, each member's as a beam's, and whether each body's plate is stuck.
+/// Whether a structure's contact has a contact and a detached length: one member (a beam, or a
+/// netlist of one member); a device's are null. Every report with contact asks this.
+inline bool HasContactLengths(const StructureDescription& structure) {
+  return structure.members.size() == 1;
+}
+
 struct FrameContactResults {
-  bool declared = false;  ///< the scene has contact or stiction
+  bool declared = false;     ///< the scene has contact or stiction
+  bool has_lengths = false;  ///< `contact` has lengths (HasContactLengths)
   ContactSummary contact;
   std::vector<ContactSummary> members;
   std::vector<bool> bodies_stuck;
@@ -22,12 +29,9 @@ struct FrameContactResults {
   /// has that member's contact and detached lengths, as a beam.
   static FrameContactResults Of(const FrameSubstrateContact& contact,
                                 const StructureDescription& structure);
-
-  /// Whether `contact` has lengths: a structure of one member (a beam); a device's are null.
-  bool HasLengths() const { return members.size() == 1; }
 };
 
-/// contact (its lengths null unless HasLengths()), members [{nodes, stuck, shape,
+/// contact (its lengths null unless has_lengths), members [{nodes, stuck, shape,
 /// detached_length_m, contact_length_m}], and `stuck` in each entry of json["bodies"], which must
 /// be there.
 void AddFrameContact(const StructureDescription& structure, const FrameContactResults& results,

@@ -12,6 +12,7 @@
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "cosmems/session/haptic_session.hpp"
+#include "frame_contact_output.hpp"
 #include "text_format.hpp"
 
 namespace cosmems::internal {
@@ -75,7 +76,7 @@ std::unique_ptr<HapticReport> HapticReport::Run(const Scene& scene) {
   loop.UpdateFrame();
   r.contact = loop.frame().contact;
   r.has_contact = scene.effects.HasContact();
-  r.on_beam = IsStraightBeam(scene);
+  r.contact_lengths = HasContactLengths(MakeStructureDescription(scene));
   r.events = loop.frame().events;
   r.position_scale = settings.scaling.position_scale;
   r.force_scale = settings.scaling.force_scale;
@@ -152,7 +153,7 @@ void HapticReport::AddResults(nlohmann::ordered_json& json) const {
                      {"coupling_stiffness_n_per_m", r.coupling_n_per_m},
                      {"felt_coupling_n_per_m", r.felt_coupling_n_per_m},
                      {"felt_structure_n_per_m", r.felt_structure_n_per_m}};
-  json["contact"] = ContactJson(r.contact, r.on_beam);
+  json["contact"] = ContactJson(r.contact, r.contact_lengths);
   json["contact_events"] = ContactEventsJson(r.events);
   json["device"] = {{"backend", r.hd_library.empty() ? "scripted" : "openhaptics"},
                     {"model", r.device_model},
@@ -183,7 +184,7 @@ void HapticReport::PrintResults(std::ostream& out) const {
   out << "events                " << r.events.proximity_warnings << " proximity warnings, "
       << r.events.contacts << " contacts, " << r.events.stuck << " stuck, " << r.events.releases
       << " releases\n";
-  if (r.has_contact) PrintContact(out, r.contact, r.on_beam);
+  if (r.has_contact) PrintContact(out, r.contact, r.contact_lengths);
 }
 
 void HapticReport::WriteFiles(const std::filesystem::path& directory) const {

@@ -23,10 +23,10 @@ struct HapticResults {
   std::uint64_t failed_physics_ticks = 0;
   SafetyCounters safety;
   double force_limit_n = 0.0;
-  ContactSummary contact;    ///< at the end
-  ContactEvents events;      ///< over the run
-  bool has_contact = false;  ///< the scene's substrate contact: its state is printed
-  bool on_beam = true;       ///< a beam's contact has lengths along it; a device's has none
+  ContactSummary contact;       ///< at the end
+  ContactEvents events;         ///< over the run
+  bool has_contact = false;     ///< the scene's substrate contact: its state is printed
+  bool contact_lengths = true;  ///< the contact has lengths (HasContactLengths)
   double position_scale = 0.0, force_scale = 0.0;
   double coupling_n_per_m = 0.0, felt_coupling_n_per_m = 0.0, felt_structure_n_per_m = 0.0;
   std::string realtime_note;

@@ -65,7 +65,7 @@ void ReleaseReport::AddResults(nlohmann::ordered_json& json) const {
   const ContactSummary& c = results_.contact.contact;
   json["stuck"] = c.Stuck();
   json["shape"] = ToString(c.shape);
-  if (results_.contact.HasLengths()) {
+  if (results_.contact.has_lengths) {
     json["detached_length_m"] = c.detached_length_m;
     json["contact_length_m"] = c.contact_length_m;
   } else {

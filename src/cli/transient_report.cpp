@@ -64,6 +64,7 @@ TransientResult RunFrame(const Scene& scene, const TransientOptions& options, in
   results.watched_component = out.watched_component;
   if (const FrameSubstrateContact* contact = scene_forces.contact()) {
     results.contact = FrameContactResults::Of(*contact, structure).contact;
+    results.contact_lengths = HasContactLengths(structure);
     results.contact_events = contact->events();
   }
   return out.run;
@@ -179,7 +180,7 @@ void TransientReport::AddResults(nlohmann::ordered_json& json) const {
   json["integrator"] = ToString(results_.integrator);
   json["time_step_s"] = results_.time_step_s;
   if (results_.contact) {
-    json["contact"] = ContactJson(*results_.contact, results_.beam);
+    json["contact"] = ContactJson(*results_.contact, results_.contact_lengths);
     json["contact_events"] = ContactEventsJson(results_.contact_events);
   }
 }
@@ -210,7 +211,7 @@ void TransientReport::PrintResults(std::ostream& out) const {
   out << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ')
       << Scientific(results_.max_abs_uy) << " m\n";
   if (!results_.contact) return;
-  PrintContact(out, *results_.contact, results_.beam);
+  PrintContact(out, *results_.contact, results_.contact_lengths);
   const ContactEvents& e = results_.contact_events;
   out << "contact events        " << e.proximity_warnings << " proximity warnings, " << e.contacts
       << " contacts, " << e.stuck << " stuck, " << e.releases << " releases\n";

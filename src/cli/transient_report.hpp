@@ -39,6 +39,7 @@ struct TransientResults {
   Eigen::MatrixXd history;
   int watched_component = 1;
   std::optional<ContactSummary> contact;  ///< at the end, with contact declared
+  bool contact_lengths = false;           ///< whether `contact` has lengths (HasContactLengths)
   ContactEvents contact_events;
 };
 

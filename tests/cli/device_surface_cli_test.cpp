@@ -217,6 +217,35 @@ type = "release"
   ExpectContains(rows[2], "tip,");
 }
 
+// A one-member netlist's transient with contact reports its lengths as its release and the
+// cantilever do (one rule, HasContactLengths): driven onto the substrate by a tip force, it ends
+// with a free span and a length on the substrate that are numbers, not null, and within the
+// member's length.
+TEST(DeviceSurfaceCliTest, ACantileverMembersTransientReportsItsContactLengths) {
+  const testing::TempDirectory dir("frame_transient_contact");
+  testing::WriteFile(dir.path() / "member.toml", CantileverMember(20) + R"(
+[[loads.points]]
+node = "tip"
+force = [0.0, -3e-6, 0.0]
+[effects]
+contact = { enabled = true }
+[analysis]
+type = "transient"
+duration = 1e-4
+time_step = 1e-7
+record = ["tip"]
+)");
+  const nlohmann::json device = RunJson({(dir.path() / "member.toml").string()});
+  ASSERT_EQ(device["status"], "ok");
+  const nlohmann::json& contact = device["contact"];
+  EXPECT_GE(device["contact_events"]["contacts"].get<int>(), 1);
+  ASSERT_TRUE(contact["detached_length_m"].is_number());
+  ASSERT_TRUE(contact["contact_length_m"].is_number());
+  EXPECT_GT(contact["detached_length_m"].get<double>(), 0.0);
+  EXPECT_LE(contact["detached_length_m"].get<double>() + contact["contact_length_m"].get<double>(),
+            200e-6 * (1.0 + 1e-12));
+}
+
 // The cantilever's static pressed onto the substrate by a tip force 3.5 times what closes the gap,
 // with stiction, as a frame member and as the beam (the same 20 Hermite elements): both tips lie
 // on the contact plane within its tolerance (1e-4 of the gap), stuck, and the clamp's stress,
