@@ -24,7 +24,6 @@
 #include "cosmems/analysis/step_timing.hpp"
 #include "cosmems/beam/force_sum.hpp"
 #include "cosmems/beam/force_tuple.hpp"
-#include "cosmems/haptics/haptic_beam.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/structure/folded_flexure.hpp"
 #include "cosmems/structure/straight_beam.hpp"
@@ -174,23 +173,12 @@ void PressTheTip(benchmark::State& state, HapticPhysics& touched) {
   });
 }
 
-// The tick the hand feels (HapticBeam): the probe (coupling 5 N/m, radius 2 um) presses the tip
-// 4 um down, past the substrate, and lifts it 3 um clear, over and over (kCycle ticks a cycle),
-// with the same surface forces, on the full model's path or the modal one (`modes` modes,
-// Q = 100), at the haptic default of steps a tick (HapticPhysicsOptions::substeps).
-void BM_TouchedBeamTick(benchmark::State& state) {
-  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
-  Surface forces = MakeSurface(model);
-  const HapticPhysicsOptions physics = TipPressPhysics(state);
-  HapticBeam<2> beam(model, ProbeOptions{2e-6, 5.0}, &forces, &forces.get<0>(), physics);
-  PressTheTip(state, beam);
-  state.counters["stuck_events"] = static_cast<double>(forces.get<0>().events().stuck);
-}
-BENCHMARK(BM_TouchedBeamTick)->Apply(TipPressRuns);
-
-// The same press on the same cantilever as the one-member netlist the command line touches
-// (StraightBeam, planar: the beam's unknowns and band) with the frame's contact, stiction and
-// Casimir force (HapticStructure): what the one structure costs against the beam's own path.
+// The tick the hand feels on the reference cantilever as the command line touches it (its
+// one-member netlist, StraightBeam, planar: the beam's unknowns and band; HapticStructure): the
+// probe (coupling 5 N/m, radius 2 um) presses the tip 4 um down, past the substrate, and lifts it
+// 3 um clear, over and over (kCycle ticks a cycle), with the paper's contact, stiction and
+// Casimir force, on the full model's path or the modal one (`modes` modes, Q = 100), at the
+// haptic default of steps a tick (HapticPhysicsOptions::substeps).
 void BM_TouchedChainTick(benchmark::State& state) {
   StraightBeamDesign design;
   design.elements = 20;

@@ -28,7 +28,7 @@ int main() {
   while (!device.Done()) {  // the display side, at 30 Hz
     if (scene.loop().UpdateFrame() && ++shown % 30 == 0) {
       const HapticFrame& f = scene.loop().frame();
-      std::cout << "t = " << f.time_s << " s  tip " << f.deflection_m[20] * 1e6 << " um  probe "
+      std::cout << "t = " << f.time_s << " s  tip " << scene.TipDeflection(f) * 1e6 << " um  probe "
                 << f.probe_force_n.norm() * 1e6 << " uN  " << ToString(f.contact.state) << "\n";
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(33));

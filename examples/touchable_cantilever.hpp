@@ -46,6 +46,11 @@ class TouchableCantilever {
 
   HapticLoop& loop() { return *loop_; }
 
+  /// The tip's deflection u_y [m] in a frame (the tip is the netlist's node 1).
+  double TipDeflection(const HapticFrame& frame) const {
+    return frame.carrier_motion_m(1, model_.mesh().nodes[1].carrier);
+  }
+
  private:
   static StraightBeamDesign Design() {
     StraightBeamDesign d;

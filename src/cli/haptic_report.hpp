@@ -39,7 +39,7 @@ struct HapticResults {
 
 /// A stylus touching the beam or the device: a ScriptedDevice replaying [device].trajectory at the
 /// analysis rate, or an OpenHapticsDevice (a PHANTOM Omni or Touch) for analysis.duration (30 s
-/// when not given); a HapticLoop runs its physics (HapticBeam or HapticStructure: the scene's
+/// when not given); a HapticLoop runs its physics (HapticStructure: the scene's
 /// effects plus the probe) and renders the force through the safety layer. The scripted stylus
 /// with realtime = true, and every real device, pace the ticks on the wall clock with the physics
 /// on its own thread; the scripted stylus with realtime = false runs them as fast as possible

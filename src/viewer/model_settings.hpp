@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "cosmems/haptics/haptic_beam.hpp"
+#include "cosmems/haptics/haptic_physics.hpp"
 #include "cosmems/scene/design_parameters.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scene/scene_loader.hpp"

@@ -14,12 +14,8 @@ struct HapticFrame {
   double time_s = 0.0;                                      ///< simulated time
   Eigen::Vector3d probe_m = Eigen::Vector3d::Zero();        ///< probe centre, global axes
   Eigen::Vector3d probe_force_n = Eigen::Vector3d::Zero();  ///< the structure's push on it
-  Eigen::VectorXd node_x_m;                                 ///< a beam's node positions on its axis
-  Eigen::VectorXd deflection_m;                             ///< a beam's u_y at each node
-  Eigen::VectorXd rotation_rad;                             ///< a beam's theta_z at each node
-  /// A structure's motion, one column per carrier of its FrameMesh (each free node, then each
-  /// body): u [m] then theta [rad] about the carrier's reference point, global axes. Empty for a
-  /// beam.
+  /// The structure's motion, one column per carrier of its FrameMesh: u [m] then theta [rad]
+  /// about the carrier's reference point, global axes.
   Eigen::Matrix<double, 6, Eigen::Dynamic> carrier_motion_m;
   ContactSummary contact;       ///< with the substrate
   ContactEvents events;         ///< counted since the start

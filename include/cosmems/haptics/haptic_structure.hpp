@@ -1,6 +1,6 @@
 #pragma once
 
-#include "cosmems/haptics/frame_probe_contact.hpp"
+#include "cosmems/haptics/probe_contact.hpp"
 #include "cosmems/haptics/probed_physics.hpp"
 #include "cosmems/structure/frame_model.hpp"
 #include "cosmems/surface/frame_substrate_contact.hpp"
@@ -8,11 +8,11 @@
 namespace cosmems {
 
 /// Any structure (a FrameModel: members, bodies, anchors) as the hand touches it: the effects
-/// its scene declares and the probe on every member's and body's faces (FrameProbeContact),
+/// its scene declares and the probe on every member's and body's faces (ProbeContact),
 /// advanced one servo tick at a time (ProbedPhysics). On the modal path (many elements) a tick
 /// costs the modes', not the band's. Its frames carry every carrier's motion and the substrate
 /// contact's state.
-class HapticStructure final : public ProbedPhysics<FrameModel, FrameProbeContact> {
+class HapticStructure final : public ProbedPhysics<FrameModel, ProbeContact> {
  public:
   /// `effects` (the scene's forces; nullptr: none) and `contact` (the substrate contact among
   /// them, for its state and events; nullptr: none) belong to the caller and must outlive this.

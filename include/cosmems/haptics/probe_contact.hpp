@@ -3,131 +3,195 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <array>
-#include <initializer_list>
+#include <cmath>
+#include <limits>
 #include <vector>
 
-#include "cosmems/beam/beam_model.hpp"
 #include "cosmems/beam/hermite_shapes.hpp"
 #include "cosmems/haptics/probe_faces.hpp"
+#include "cosmems/structure/frame_model.hpp"
 
 namespace cosmems {
 
-/// The probe pressing on the beam's faces (ProbeFaces pushes). The sphere's centre p is in the
-/// beam's axes [m] (x along the axis from the first support, y away from the substrate, z across
-/// the width); the beam is the box 0 <= x <= L, |z| <= b/2, |y - u_y(x)| <= t/2. Each face moves
-/// along its axis by the beam's displacement at the face point under the sphere: Hermite cubics
-/// for bending, the axial ends' u_x for the end faces. The upper and lower faces are the
-/// rectangles 0 <= x <= L, |z| <= b/2 (their overlaps are both positive exactly when the sphere
-/// meets the box); the sides and ends are taken unbounded in y (their overlaps only choose the
-/// push).
+/// The probe pressing on a structure's faces (ProbeFaces pushes): the box of every mesh element
+/// (its length, its thickness along its local y, its width along its local z) and of every
+/// rigid body. The sphere's centre is in the structure's global axes [m].
 ///
-/// In a 3-D model numbered node by node (DofNumbering::kByNode) the upper and lower faces also
-/// turn with the twist r_x: their point at z_c across the width moves by u_y - r_x z_c, so a push
-/// off the axis twists the beam. Numbered field by field, bending and torsion lie outside each
-/// other's band and the twist is left out. The sides move with u_z (their small arm about the
-/// axis, at most t/2, is left out); in a planar model they do not move: a rigid wall to the hand.
-/// MoveTo() allocates nothing.
-template <int Dim>
+/// MoveTo() takes the box nearest the centre (the least distance from the centre to the box;
+/// the first of those containing it) among those within the radius across their thickness (a
+/// box's faces are taken unbounded along its thickness, so the clearance above a face is known at
+/// any height), and places the faces of its member at the point of each under the sphere: the
+/// box's thickness and width faces, and the member's two ends (a member is one straight box from
+/// its first node to its second, so no face stands between two of its elements). A face of an
+/// element moves along its axis with the element's interpolation at that point: linear u_x for
+/// the ends, the Hermite cubics of u_y and u_z for the thickness and width faces, plus the
+/// section's rotation (linear in xi) times the point's arm from the axis, so a push off the axis
+/// twists the member. A face of a body moves as the body, u + theta x (P - c). A face's weights
+/// keep only the degrees of freedom coupled to the direction it mostly moves in
+/// (FrameModel::Coupled): the band has no room for the rest, which are the small arm terms across
+/// a planar device's in-plane and out-of-plane groups and, in a straight chain without
+/// FrameCouplings::kTwist, the twist. Placing the faces costs a scan of the boxes and allocates
+/// nothing.
 class ProbeContact final : public ProbeFaces {
  public:
-  ProbeContact(const BeamModel<Dim>& model, const ProbeOptions& options)
-      : ProbeFaces(model.units(), options) {
-    const auto& elements = model.description().elements;
-    const bool twisting = model.dofs().numbering() == DofNumbering::kByNode;
+  ProbeContact(const FrameModel& model, const ProbeOptions& options)
+      : ProbeFaces(model.units(), options), model_(model) {
+    const FrameMesh& mesh = model.mesh();
     for (int e = 0; e < model.ElementCount(); ++e) {
-      Element element;
-      element.x0 = model.NodeX()[e];
-      element.h = model.elements()[e].properties().length;
-      element.half_thickness = 0.5 * elements[e].section.thickness / units_.length;
-      element.half_width = 0.5 * elements[e].section.width / units_.length;
-      for (int node = 0; node < 2; ++node) {
-        element.axial[node] = model.dofs().Reduced(e + node, NodalDof::kUx);
-        element.bending_y[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUy);
-        element.bending_y[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRz);
-        element.bending_z[2 * node] = model.dofs().Reduced(e + node, NodalDof::kUz);
-        element.bending_z[2 * node + 1] = model.dofs().Reduced(e + node, NodalDof::kRy);
-        element.twist[node] = twisting ? model.dofs().Reduced(e + node, NodalDof::kRx) : -1;
-      }
-      elements_.push_back(element);
+      const FrameMesh::Element& element = mesh.elements[e];
+      const RectangularSection& s = model.description().members[element.member].section;
+      Box box;
+      box.centre = 0.5 * (mesh.nodes[element.from].position + mesh.nodes[element.to].position) /
+                   units_.length;
+      box.axes = element.axes;
+      box.half = 0.5 * Eigen::Vector3d(element.length, s.thickness, s.width) / units_.length;
+      box.element = e;
+      // Elements come member by member, each member's from its first node to its second.
+      const bool starts = e == 0 || mesh.elements[e - 1].member != element.member;
+      box.first = starts ? e : boxes_.back().first;
+      boxes_.push_back(box);
     }
-    length_ = model.NodeX().back();
+    for (std::size_t b = 0; b < model.description().bodies.size(); ++b) {
+      const StructureBody& body = model.description().bodies[b];
+      Box box;
+      box.centre = body.center / units_.length;
+      box.axes = Eigen::Matrix3d::Identity();
+      box.half = 0.5 * body.size / units_.length;
+      box.body = static_cast<int>(b);
+      box.first = box.last = static_cast<int>(boxes_.size());
+      boxes_.push_back(box);
+    }
+    for (int e = model.ElementCount() - 1; e >= 0; --e) {
+      const bool ends =
+          e + 1 == model.ElementCount() || mesh.elements[e + 1].member != mesh.elements[e].member;
+      boxes_[e].last = ends ? e : boxes_[e + 1].last;
+    }
   }
 
-  /// Places the sphere's centre at `centre_m` [m, beam axes].
+  /// Places the sphere's centre at `centre_m` [m, global axes].
   void MoveTo(const Eigen::Vector3d& centre_m) {
     const Eigen::Vector3d p = centre_m / units_.length;
-    const double xc = std::clamp(p.x(), 0.0, length_);
-    const auto it = std::upper_bound(elements_.begin(), elements_.end(), xc,
-                                     [](double x, const Element& e) { return x < e.x0; });
-    const std::size_t index =
-        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, it - elements_.begin() - 1));
-    const Element& e = elements_[index];
-    const double xi = std::clamp((xc - e.x0) / e.h, 0.0, 1.0);
-    const double dx = p.x() - xc;
-    const double zc = std::clamp(p.z(), -e.half_width, e.half_width);
-    const double dz = p.z() - zc;
     const double r2 = radius_ * radius_;
-    // Beyond the strip by more than the radius (or NaN): nothing to touch.
-    reach_ = dx * dx + dz * dz < r2;
+    const Box* nearest = nullptr;
+    double least = std::numeric_limits<double>::infinity();
+    for (const Box& box : boxes_) {
+      const Eigen::Vector3d out = Outside(box, p);
+      // Beyond the radius across the thickness (or NaN): out of reach.
+      if (!(out.x() * out.x() + out.z() * out.z() < r2)) continue;
+      if (out.squaredNorm() < least) {
+        least = out.squaredNorm();
+        nearest = &box;
+      }
+    }
+    reach_ = nearest != nullptr;
     if (!reach_) return;
-    const double over_face = std::sqrt(r2 - dx * dx - dz * dz);
-    const double beside = std::sqrt(r2 - dx * dx);
-    const double past_end = std::sqrt(r2 - dz * dz);
-
-    const std::array<double, 4> hermite = HermiteShapes(xi);
-    // u_y - r_x z_c at the face's point, r_x linear along the element.
-    const Dofs across_y = {e.bending_y[0], e.bending_y[1], e.bending_y[2],
-                           e.bending_y[3], e.twist[0],     e.twist[1]};
-    const Weights along_y = PadWeights(
-        {hermite[0], e.h * hermite[1], hermite[2], e.h * hermite[3], -zc * (1.0 - xi), -zc * xi});
-    // x-z plane: the slope of u_z is -r_y.
-    const Dofs across_z = {e.bending_z[0], e.bending_z[1], e.bending_z[2], e.bending_z[3], -1, -1};
-    const Weights along_z =
-        PadWeights({hermite[0], -e.h * hermite[1], hermite[2], -e.h * hermite[3]});
-    const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
-                          z = Eigen::Vector3d::UnitZ();
-    Place(ProbeFace::kUpper, +1.0, e.half_thickness - p.y() + over_face, y, PadDofs(across_y),
-          along_y);
-    Place(ProbeFace::kLower, -1.0, e.half_thickness + p.y() + over_face, -y, PadDofs(across_y),
-          along_y);
-    Place(ProbeFace::kPositiveZ, +1.0, e.half_width - p.z() + beside, z, PadDofs(across_z),
-          along_z);
-    Place(ProbeFace::kNegativeZ, -1.0, e.half_width + p.z() + beside, -z, PadDofs(across_z),
-          along_z);
-    const Weights end = PadWeights({1.0});
-    Place(ProbeFace::kFirstEnd, -1.0, p.x() + past_end, -x,
-          PadDofs({elements_.front().axial[0], -1, -1, -1, -1, -1}), end);
-    Place(ProbeFace::kLastEnd, +1.0, length_ - p.x() + past_end, x,
-          PadDofs({elements_.back().axial[1], -1, -1, -1, -1, -1}), end);
+    const Box& box = *nearest;
+    const Eigen::Vector3d q = box.axes * (p - box.centre);
+    const Eigen::Vector3d out = Outside(box, p);
+    const Eigen::Vector3d clamped = q - out;
+    // Faces in ProbeFace order: +-y, +-z, -x, +x of the box.
+    constexpr int kAxis[kProbeFaceCount] = {1, 1, 2, 2, 0, 0};
+    constexpr double kSign[kProbeFaceCount] = {1.0, -1.0, 1.0, -1.0, -1.0, 1.0};
+    for (int f = 0; f < kProbeFaceCount; ++f) {
+      const int a = kAxis[f];
+      const double s = kSign[f];
+      // The ends are the member's: the face of its first or last box, at the same section.
+      const Box& face_box =
+          a != 0 ? box : boxes_[static_cast<std::size_t>(s < 0 ? box.first : box.last)];
+      const double q_a = a != 0 ? q[a] : (box.axes * (p - face_box.centre))[a];
+      // Across the face in its plane; every face unbounded along the thickness.
+      const double across =
+          out.squaredNorm() - out[a] * out[a] - (a == 1 ? 0.0 : out.y() * out.y());
+      Eigen::Vector3d point = clamped;  // the face's point under the sphere, its box's axes
+      point[a] = s * face_box.half[a];
+      const Eigen::Vector3d normal = s * box.axes.row(a).transpose();
+      std::array<int, 12> dofs;
+      const Weights w = face_box.element >= 0 ? ElementWeights(face_box, a, point, dofs)
+                                              : BodyWeights(face_box, a, point, dofs);
+      Place(static_cast<ProbeFace>(f), s, face_box.half[a] - s * q_a + std::sqrt(r2 - across),
+            normal, dofs, Coupled(w));
+    }
   }
 
  private:
-  // A face's point moves with at most six dofs: u_y, r_z of both nodes and their twists.
-  using Dofs = std::array<int, 6>;  ///< reduced dofs (-1: supported or absent)
   using Weights = Eigen::Matrix<double, 12, 1>;
 
-  struct Element {
-    double x0 = 0.0, h = 0.0, half_thickness = 0.0, half_width = 0.0;
-    std::array<int, 2> axial{};      ///< u_x of both nodes
-    std::array<int, 4> bending_y{};  ///< u_y, r_z of both nodes
-    std::array<int, 4> bending_z{};  ///< u_z, r_y of both nodes
-    std::array<int, 2> twist{};      ///< r_x of both nodes (-1 when left out)
+  struct Box {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  ///< rows: its axes in global ones
+    Eigen::Vector3d half = Eigen::Vector3d::Zero();      ///< half sizes along its axes
+    int element = -1, body = -1;                         ///< what it is
+    int first = 0, last = 0;  ///< the boxes of its member's ends (a body's: itself)
   };
 
-  static std::array<int, 12> PadDofs(const Dofs& dofs) {
-    std::array<int, 12> out;
-    out.fill(-1);
-    std::copy(dofs.begin(), dofs.end(), out.begin());
-    return out;
-  }
-  static Weights PadWeights(std::initializer_list<double> weights) {
-    Weights out = Weights::Zero();
-    std::copy(weights.begin(), weights.end(), out.data());
-    return out;
+  // How far the point p lies outside the box along each of its axes (zero inside).
+  static Eigen::Vector3d Outside(const Box& box, const Eigen::Vector3d& p) {
+    const Eigen::Vector3d q = box.axes * (p - box.centre);
+    return q - q.cwiseMax(-box.half).cwiseMin(box.half);
   }
 
-  double length_ = 0.0;
-  std::vector<Element> elements_;
+  // The motion along the element's local axis a of the point (local offsets from its centre)
+  // per unit of its carriers' dofs.
+  Weights ElementWeights(const Box& box, int a, const Eigen::Vector3d& point,
+                         std::array<int, 12>& dofs) const {
+    const int e = box.element;
+    const double l = model_.elements()[e].properties().length;
+    const double xi = std::clamp(0.5 + point.x() / l, 0.0, 1.0);
+    const std::array<double, 4> h = HermiteShapes(xi);
+    Weights local = Weights::Zero();  // [u, theta] of the first node, then of the second
+    if (a == 0) {
+      local[0] = 1.0 - xi;
+      local[6] = xi;
+    } else if (a == 1) {  // thickness: u_y, with the slope r_z
+      local[1] = h[0];
+      local[5] = l * h[1];
+      local[7] = h[2];
+      local[11] = l * h[3];
+    } else {  // width: u_z, with the slope -r_y
+      local[2] = h[0];
+      local[4] = -l * h[1];
+      local[8] = h[2];
+      local[10] = -l * h[3];
+    }
+    // The section's rotation theta(xi) moves the point off the axis by theta x o: along e_a,
+    // theta . (o x e_a), o = (0, y, z): the twist for the thickness and width faces, the
+    // bendings' rotations for the ends.
+    const Eigen::Vector3d arm(0.0, point.y(), point.z());
+    const Eigen::Vector3d lever = arm.cross(Eigen::Vector3d::Unit(a));
+    for (int k = 0; k < 3; ++k) {
+      local[3 + k] += (1.0 - xi) * lever[k];
+      local[9 + k] += xi * lever[k];
+    }
+    dofs = model_.ElementDofs(e);
+    return model_.ElementTransform(e).transpose() * local;
+  }
+
+  // The motion along global axis a of a body's point (offsets from its centre), u + theta x o.
+  Weights BodyWeights(const Box& box, int a, const Eigen::Vector3d& point,
+                      std::array<int, 12>& dofs) const {
+    const int carrier = model_.mesh().body_carrier[box.body];
+    dofs.fill(-1);
+    for (int k = 0; k < 6; ++k) dofs[k] = model_.CarrierDof(carrier, k);
+    Weights w = Weights::Zero();
+    w[a] = 1.0;
+    w.segment<3>(3) = point.cross(Eigen::Vector3d::Unit(a));
+    return w;
+  }
+
+  // The weights without the directions outside the band of the one the face mostly moves in.
+  Weights Coupled(Weights w) const {
+    int principal = 0;
+    for (int i = 0; i < 12; ++i) {
+      if (i % 6 < 3 && std::abs(w[i]) > std::abs(w[principal])) principal = i;
+    }
+    for (int i = 0; i < 12; ++i) {
+      if (!model_.Coupled(i, principal)) w[i] = 0.0;
+    }
+    return w;
+  }
+
+  const FrameModel& model_;
+  std::vector<Box> boxes_;
 };
 
 }  // namespace cosmems

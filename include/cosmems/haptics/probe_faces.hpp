@@ -38,9 +38,8 @@ struct ProbeTouch {
   double force_n = 0.0;
 };
 
-/// The probe pressing on the six faces of a box of the structure, as a NonlinearForce; the
-/// probes of a beam (ProbeContact) and of a frame (FrameProbeContact) place the faces of the box
-/// under the sphere (MoveTo), this pushes.
+/// The probe pressing on the six faces of a box of the structure, as a NonlinearForce;
+/// ProbeContact places the faces of the box under the sphere (MoveTo), this pushes.
 ///
 /// Face f, moved along its axis by u_f(d) = w_f . d at the face's point under the sphere,
 /// overlaps the sphere by delta_f(d) = s_f u_f(d) + c_f, s_f = +-1 its side and c_f its

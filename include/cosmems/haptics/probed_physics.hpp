@@ -14,10 +14,9 @@
 
 namespace cosmems {
 
-/// The part of HapticPhysics every touched structure shares: a model (BeamModel or FrameModel),
-/// its probe (ProbeContact or FrameProbeContact) and the effects its scene declares, stepped by
-/// the stepper of the options' path, with the local model of the touched point. HapticBeam and
-/// HapticStructure add what they show.
+/// The part of HapticPhysics that steps: a model, its probe and the effects its scene declares,
+/// stepped by the stepper of the options' path, with the local model of the touched point.
+/// HapticStructure (FrameModel, ProbeContact) adds the contact's state and what a frame shows.
 template <class Model, class Probe>
 class ProbedPhysics : public HapticPhysics {
  public:

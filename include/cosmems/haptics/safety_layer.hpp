@@ -195,7 +195,10 @@ class SafetyLayer {
     Reading reading = Reading::kOk;
     for (int i = 0; i < 3; ++i) {
       const double x = in[i];
-      if (!std::isfinite(x)) return Reading::kNonFinite;
+      if (!std::isfinite(x)) {
+        out.setZero();  // never read on a fault; defined all the same
+        return Reading::kNonFinite;
+      }
       if (std::abs(x) > bound) reading = Reading::kOutOfRange;
       out[i] = std::abs(x) < StateBounds::kNegligible ? 0.0 : x;
     }

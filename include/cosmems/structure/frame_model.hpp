@@ -35,7 +35,7 @@ namespace cosmems {
 /// The couplings between a member's fields that the forces on a frame may add to its linear
 /// elements, as a set: axial stretching ties each member's axial field to its two bendings
 /// (FrameStretchingForce); a probe pressing a thickness face off the axis ties the bending
-/// across the thickness (u_y, r_z) to the twist r_x (FrameProbeContact). The numbering keeps
+/// across the thickness (u_y, r_z) to the twist r_x (ProbeContact). The numbering keeps
 /// apart only what never couples: the twist widens a straight chain's band from its bending's
 /// two unknowns a node to three, and leaves a planar device's (whose out-of-plane group holds
 /// both) as it is.

@@ -13,7 +13,7 @@ namespace cosmems {
 /// and modal propagation (exact, or with the force held over each step). Loads are amplitudes s
 /// of the load patterns P (n x m) the stepper was built with, varying linearly over a step.
 /// Everything in internal units. MakeBeamStepper (analysis/beam_stepper_factory.hpp) builds one
-/// for a path; RunTransient and HapticBeam march with it. Step() allocates nothing.
+/// for a path; RunTransient and ProbedPhysics march with it. Step() allocates nothing.
 class BeamStepper {
  public:
   virtual ~BeamStepper() = default;
