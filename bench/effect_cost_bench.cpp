@@ -9,11 +9,17 @@
 //                          force far above the substrate (idle steps)
 //   BM_EffectStep/<effect> one effect declared; the tip force presses the beam onto the
 //                          substrate for contact and stiction (2x the force that closes the gap)
+//   BM_EffectStepChain/<effect> the same, built as `cosmems run` builds it today: the scene's
+//                          one-member netlist (FrameModel) and its FrameSceneForces (the
+//                          electrodes at the scene's voltage among them)
 // The per-step cost is the mean over many steps after 2000 steps of settling.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cosmems/beam/load_vector.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/frame_scene_forces.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scene/scene_loader.hpp"
@@ -54,26 +60,49 @@ void BM_BareLinearStep(benchmark::State& state) {
 }
 BENCHMARK(BM_BareLinearStep)->Unit(benchmark::kNanosecond);
 
-void BM_EffectStep(benchmark::State& state, std::vector<std::string> sets) {
+// The planar cantilever scene with the overrides `sets`.
+Scene PlanarScene(std::vector<std::string> sets) {
   sets.push_back("model.dimension=2");
   std::vector<SceneOverride> overrides;
   for (const std::string& set : sets) overrides.push_back(SceneOverride::Parse(set));
-  const Scene scene = LoadScene("cantilever", overrides);
-  const BeamModel<2> model(MakeBeamDescription(scene));
-  SceneForces<2> forces(model, scene);
-  const Eigen::VectorXd f = AssembleLoads(model, MakeLoadCase(scene));
+  return LoadScene("cantilever", overrides);
+}
+
+// Marches the model under the load f with `forces` (nullptr: the linear fast path).
+template <class Model>
+void MarchTheEffects(benchmark::State& state, const Model& model, NonlinearForce* forces,
+                     const Eigen::VectorXd& f) {
   const auto parameters = GeneralizedAlphaParameters::FromSpectralRadius(0.6);
   const double dt = kTimeStep / model.units().time;
-  if (forces.All() == nullptr) {
+  if (forces == nullptr) {
     LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, parameters, dt);
     March(state, integrator, f);
   } else {
-    NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, *forces.All(),
-                                          parameters, dt);
+    NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, *forces, parameters,
+                                          dt);
     March(state, integrator, f);
     state.counters["newton_iterations"] = integrator.last_stats().iterations;
     state.counters["residuals"] = integrator.last_stats().evaluations;
   }
+  state.counters["dofs"] = model.FreeDofCount();
+}
+
+void BM_EffectStep(benchmark::State& state, std::vector<std::string> sets) {
+  const Scene scene = PlanarScene(std::move(sets));
+  const BeamModel<2> model(MakeBeamDescription(scene));
+  SceneForces<2> forces(model, scene);
+  MarchTheEffects(state, model, forces.All(), AssembleLoads(model, MakeLoadCase(scene)));
+}
+
+void BM_EffectStepChain(benchmark::State& state, std::vector<std::string> sets) {
+  const Scene scene = PlanarScene(std::move(sets));
+  const StructureDescription structure = MakeStructureDescription(scene);
+  const FrameModel model(structure, MakeFrameCouplings(scene));
+  FrameSceneForces scene_forces(model, scene);
+  ForceSum& forces = scene_forces.all();
+  if (scene_forces.electrodes()) forces.Add(*scene_forces.electrodes());
+  MarchTheEffects(state, model, forces.Empty() ? nullptr : &forces,
+                  AssembleFrameLoads(model, MakeFrameLoadCase(scene, structure)));
 }
 
 const std::string kPressed = "loads.tip_force=[0.0, -3.4e-6, 0.0]";
@@ -87,6 +116,19 @@ BENCHMARK_CAPTURE(BM_EffectStep, casimir, {"effects.casimir.enabled=true"});
 BENCHMARK_CAPTURE(BM_EffectStep, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"});
 BENCHMARK_CAPTURE(BM_EffectStep, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"});
 BENCHMARK_CAPTURE(BM_EffectStep, contact_stiction_casimir,
+                  {"effects.stiction.adhesion_energy=0.02", "effects.casimir.enabled=true",
+                   kPressed});
+
+BENCHMARK_CAPTURE(BM_EffectStepChain, none, {});
+BENCHMARK_CAPTURE(BM_EffectStepChain, contact, {"effects.contact.enabled=true", kPressed});
+BENCHMARK_CAPTURE(BM_EffectStepChain, contact_idle, {"effects.contact.enabled=true"});
+BENCHMARK_CAPTURE(BM_EffectStepChain, stiction,
+                  {"effects.stiction.adhesion_energy=0.02", kPressed});
+BENCHMARK_CAPTURE(BM_EffectStepChain, electrostatic_10V, {"effects.electrostatic.voltage=10.0"});
+BENCHMARK_CAPTURE(BM_EffectStepChain, casimir, {"effects.casimir.enabled=true"});
+BENCHMARK_CAPTURE(BM_EffectStepChain, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"});
+BENCHMARK_CAPTURE(BM_EffectStepChain, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"});
+BENCHMARK_CAPTURE(BM_EffectStepChain, contact_stiction_casimir,
                   {"effects.stiction.adhesion_energy=0.02", "effects.casimir.enabled=true",
                    kPressed});
 

@@ -4,7 +4,8 @@
 // runs also report their operation count and its time on this machine
 // (bench/flop_rate.hpp) and, up to 100 elements, the time of the same step with
 // dense LLT (`dense_ns`, `x_dense`): the yardsticks of a step at the speed of
-// its arithmetic.
+// its arithmetic. Each runs on BeamModel<Dim> and on the same cantilever's one-member netlist
+// (FrameModel; planar for Dim 2), what every front end builds (`Chain` in the name).
 #include <algorithm>
 
 #include "cosmems/time/linear_newmark_integrator.hpp"
@@ -18,8 +19,8 @@ namespace {
 
 // The integrator of the reference cantilever's step by `solver`, started under
 // a uniform load.
-template <int Dim>
-LinearNewmarkIntegrator MakeStep(const BeamModel<Dim>& model, SpdSolverKind solver,
+template <class Model>
+LinearNewmarkIntegrator MakeStep(const Model& model, SpdSolverKind solver,
                                  const Eigen::VectorXd& f) {
   const double period = 14.5e-6 / model.units().time;  // f1 = 68.8 kHz
   LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {},
@@ -47,10 +48,8 @@ double BandStepFlops(int n, int bandwidth) {
   return n * (2.0 * (2 * bandwidth + 1) + 4.0 * bandwidth + 1.0 + 14.0);
 }
 
-template <int Dim, SpdSolverKind kSolver>
-void BM_LinearNewmarkStep(benchmark::State& state) {
-  const BeamModel<Dim> model(
-      bench::ReferenceBeam(StructureKind::kCantilever, static_cast<int>(state.range(0)), 0));
+template <SpdSolverKind kSolver, class Model>
+void TimeTheStep(benchmark::State& state, const Model& model) {
   const int n = model.FreeDofCount();
   const Eigen::VectorXd f = Eigen::VectorXd::Constant(n, 1e-4);
   LinearNewmarkIntegrator integrator = MakeStep(model, kSolver, f);
@@ -72,6 +71,20 @@ void BM_LinearNewmarkStep(benchmark::State& state) {
   state.counters["x_dense"] = step_ns / dense_ns;
 }
 
+template <int Dim, SpdSolverKind kSolver>
+void BM_LinearNewmarkStep(benchmark::State& state) {
+  const int elements = static_cast<int>(state.range(0));
+  TimeTheStep<kSolver>(
+      state, BeamModel<Dim>(bench::ReferenceBeam(StructureKind::kCantilever, elements, 0)));
+}
+
+template <int Dim, SpdSolverKind kSolver>
+void BM_LinearNewmarkStepChain(benchmark::State& state) {
+  const int elements = static_cast<int>(state.range(0));
+  TimeTheStep<kSolver>(
+      state, FrameModel(bench::ReferenceChain(StructureKind::kCantilever, elements, 0, Dim == 2)));
+}
+
 void Small(benchmark::internal::Benchmark* b) {
   for (int n : {1, 2, 3, 4, 5, 10, 20, 50, 100}) b->Arg(n);
   b->ArgName("elements");
@@ -87,6 +100,12 @@ BENCHMARK(BM_LinearNewmarkStep<2, SpdSolverKind::kCholmod>)->Apply(Large);
 BENCHMARK(BM_LinearNewmarkStep<3, SpdSolverKind::kDense>)->Apply(Small);
 BENCHMARK(BM_LinearNewmarkStep<3, SpdSolverKind::kBand>)->Apply(Large);
 BENCHMARK(BM_LinearNewmarkStep<3, SpdSolverKind::kCholmod>)->Apply(Large);
+BENCHMARK(BM_LinearNewmarkStepChain<2, SpdSolverKind::kDense>)->Apply(Small);
+BENCHMARK(BM_LinearNewmarkStepChain<2, SpdSolverKind::kBand>)->Apply(Large);
+BENCHMARK(BM_LinearNewmarkStepChain<2, SpdSolverKind::kCholmod>)->Apply(Large);
+BENCHMARK(BM_LinearNewmarkStepChain<3, SpdSolverKind::kDense>)->Apply(Small);
+BENCHMARK(BM_LinearNewmarkStepChain<3, SpdSolverKind::kBand>)->Apply(Large);
+BENCHMARK(BM_LinearNewmarkStepChain<3, SpdSolverKind::kCholmod>)->Apply(Large);
 
 }  // namespace
 }  // namespace cosmems

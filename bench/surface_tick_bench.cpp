@@ -54,18 +54,47 @@ double HandForce(long tick) {
   return 0.0;
 }
 
-// Contact, stiction and the Casimir pressure of the paper's scene, composed at compile time.
-using Surface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
-Surface MakeSurface(const BeamModel<2>& model) {
+// The paper's contact and stiction: asperities 20 nm high (see SubstrateContact), 0.02 J/m^2.
+ContactOptions PaperContact() {
   ContactOptions contact;
   contact.gap = kGap;
-  contact.separation = 2e-8;  // the asperities of a rough surface (see SubstrateContact)
+  contact.separation = 2e-8;
   contact.stiction = true;
   contact.adhesion_energy = 0.02;
+  return contact;
+}
+
+// Contact, stiction and the Casimir pressure of the paper's scene on the beam, composed at
+// compile time.
+using Surface = ForceTuple<SubstrateContact<2>, GapForce<2, CasimirPressure>>;
+Surface MakeSurface(const BeamModel<2>& model) {
+  const ContactOptions contact = PaperContact();
   return Surface(
       SubstrateContact<2>(model, contact),
       GapForce<2, CasimirPressure>(model, CasimirPressure{},
                                    GapSpan{kGap, 0.0, 200e-6}.WithSeparation(contact.separation)));
+}
+
+// The same forces on the cantilever's one-member netlist, as a scene builds them.
+struct ChainSurface {
+  explicit ChainSurface(const FrameModel& model)
+      : contact(model, PaperContact()), casimir(model, CasimirPressure{}, Under()) {
+    all.Add(contact);
+    all.Add(casimir);
+  }
+  static FrameGapOptions Under() {
+    FrameGapOptions under{kGap};
+    under.separation = PaperContact().separation;
+    return under;
+  }
+  FrameSubstrateContact contact;
+  FrameGapForce<CasimirPressure> casimir;
+  ForceSum all;
+};
+
+// The planar reference cantilever's netlist, Hermite elements.
+FrameModel PlanarChain() {
+  return FrameModel(bench::ReferenceChain(StructureKind::kCantilever, 20, 0, true));
 }
 
 // Times every call of `tick` (false: it failed) and sets the median, p99 and largest, on the
@@ -105,19 +134,18 @@ std::vector<double> TimeTicks(benchmark::State& state, Tick&& tick) {
   return times;
 }
 
-void BM_SurfaceTick(benchmark::State& state) {
+// The hand's force on the tip dof, `substeps` steps of the haptic integrator a tick.
+template <class Model, class Contact>
+void PushTheTip(benchmark::State& state, const Model& model, NonlinearForce& forces, int tip,
+                const Contact& contact) {
   const int substeps = static_cast<int>(state.range(0));
-  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
-  Surface forces = MakeSurface(model);
   const double dt = 1e-3 / substeps / model.units().time;
   NewtonOptions newton;  // the haptic step's
   newton.residual_tolerance = HapticPhysicsOptions{}.residual_tolerance;
   NonlinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {}, forces,
                                         GeneralizedAlphaParameters::FromSpectralRadius(0.0), dt,
                                         newton);
-  const int n = model.FreeDofCount();
-  const int tip = model.dofs().Reduced(20, NodalDof::kUy);
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.FreeDofCount());
   if (integrator.Initialize(f, f, f) != Status::kOk) state.SkipWithError("initialisation failed");
   long tick = 0;
   TimeTicks(state, [&] {
@@ -127,12 +155,34 @@ void BM_SurfaceTick(benchmark::State& state) {
     }
     return true;
   });
-  const ContactEvents& events = forces.get<0>().events();
-  state.counters["stuck_events"] = static_cast<double>(events.stuck);
-  state.counters["releases"] = static_cast<double>(events.releases);
+  state.counters["stuck_events"] = static_cast<double>(contact.events().stuck);
+  state.counters["releases"] = static_cast<double>(contact.events().releases);
 }
+
+void BM_SurfaceTick(benchmark::State& state) {
+  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 0));
+  Surface forces = MakeSurface(model);
+  PushTheTip(state, model, forces, model.dofs().Reduced(20, NodalDof::kUy), forces.get<0>());
+}
+
+// The same on the netlist every front end builds, its forces summed at run time as a scene's.
+void BM_SurfaceTickChain(benchmark::State& state) {
+  const FrameModel model = PlanarChain();
+  ChainSurface forces(model);
+  PushTheTip(state, model, forces.all, model.CarrierDof(model.mesh().nodes[1].carrier, 1),
+             forces.contact);
+}
+
 // Whole cycles, so that pressing, holding and peeling all count.
 BENCHMARK(BM_SurfaceTick)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(10)
+    ->Arg(20)
+    ->ArgName("substeps")
+    ->Iterations(10 * kCycle)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceTickChain)
     ->Arg(1)
     ->Arg(2)
     ->Arg(10)
@@ -180,27 +230,12 @@ void PressTheTip(benchmark::State& state, HapticPhysics& touched) {
 // Casimir force, on the full model's path or the modal one (`modes` modes, Q = 100), at the
 // haptic default of steps a tick (HapticPhysicsOptions::substeps).
 void BM_TouchedChainTick(benchmark::State& state) {
-  StraightBeamDesign design;
-  design.elements = 20;
-  design.series_order = 0;
-  design.planar = true;
-  const FrameModel model(StraightBeam(design));
-  ContactOptions contact;
-  contact.gap = kGap;
-  contact.separation = 2e-8;
-  contact.stiction = true;
-  contact.adhesion_energy = 0.02;
-  FrameSubstrateContact substrate(model, contact);
-  FrameGapOptions under{kGap};
-  under.separation = contact.separation;
-  FrameGapForce<CasimirPressure> casimir(model, CasimirPressure{}, under);
-  ForceSum forces;
-  forces.Add(substrate);
-  forces.Add(casimir);
+  const FrameModel model = PlanarChain();
+  ChainSurface forces(model);
   const HapticPhysicsOptions physics = TipPressPhysics(state);
-  HapticStructure chain(model, ProbeOptions{2e-6, 5.0}, &forces, &substrate, physics);
+  HapticStructure chain(model, ProbeOptions{2e-6, 5.0}, &forces.all, &forces.contact, physics);
   PressTheTip(state, chain);
-  state.counters["stuck_events"] = static_cast<double>(substrate.events().stuck);
+  state.counters["stuck_events"] = static_cast<double>(forces.contact.events().stuck);
 }
 BENCHMARK(BM_TouchedChainTick)->Apply(TipPressRuns);
 

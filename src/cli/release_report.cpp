@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 
-#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/analysis/nonlinear_static_analysis.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
@@ -26,19 +24,13 @@ std::unique_ptr<ReleaseReport> ReleaseReport::Run(const Scene& scene) {
   ForceSum forces;  // the statics' forces: the film, a velocity's, has no share
   for (FrameElementForce* force : scene_forces.elements()) forces.Add(*force);
   forces.Add(contact);
-  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
-  if (IsOn(scene.effects.electrostatic)) {
-    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
-                                                      *scene.effects.electrostatic->voltage));
-  }
   contact.StickAll();
   NonlinearStaticOptions options;
   options.start = contact.PressedDisplacement();
   // One node or plate lets go per settle: room for every one of them, and the multipliers'.
   options.newton.max_settles =
       std::max(options.newton.max_settles, 4 * static_cast<int>(contact.points().points().size()));
-  NonlinearStaticSolve solve(model.Stiffness(), forces, options,
-                             electrostatic ? &*electrostatic : nullptr);
+  NonlinearStaticSolve solve(model.Stiffness(), forces, options, scene_forces.electrodes());
   const NonlinearStaticSolution solution = solve.Solve(AssembleFrameLoads(model, loads));
   header.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,7 +6,6 @@
 
 #include "comb_output.hpp"
 #include "cosmems/analysis/cosserat_static_solver.hpp"
-#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/rod/rod_field.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
@@ -94,11 +93,8 @@ std::unique_ptr<StaticReport> RunFrameStatic(const Scene& scene) {
   std::vector<FrameElementForce*> forces = scene_forces.held();
   if (contact) forces.push_back(contact);
   std::vector<FrameElementForce*> pressures = scene_forces.pressures();
-  std::optional<FrameGapForce<ElectrostaticPressure>> electrostatic;
-  if (IsOn(scene.effects.electrostatic)) {
-    electrostatic.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene),
-                                                      *scene.effects.electrostatic->voltage));
-    pressures.insert(pressures.begin(), &*electrostatic);
+  if (FrameGapForce<ElectrostaticPressure>* electrodes = scene_forces.electrodes()) {
+    pressures.insert(pressures.begin(), electrodes);
   }
   FrameStaticSolution& solution = results.solution;
   if (!results.combs.empty()) {
@@ -120,8 +116,8 @@ std::unique_ptr<StaticReport> RunFrameStatic(const Scene& scene) {
   header.dofs = model.FreeDofCount();
   header.model.elements = model.ElementCount();
   if (solution.status == Status::kOk) {
-    if (electrostatic) {
-      results.electrostatic_capacitance_f = electrostatic->Capacitance(solution.displacement);
+    if (const FrameGapForce<ElectrostaticPressure>* electrodes = scene_forces.electrodes()) {
+      results.electrostatic_capacitance_f = electrodes->Capacitance(solution.displacement);
     }
     if (contact) results.contact = FrameContactResults::Of(*contact, structure);
     if (IsStraightBeam(scene)) AddBeamPoints(scene, model, solution.displacement, results);

@@ -2,13 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <string>
 
 #include "contact_report.hpp"
 #include "cosmems/analysis/comb_drive_analysis.hpp"
 #include "cosmems/analysis/cosserat_transient_analysis.hpp"
-#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/analysis/frame_transient_analysis.hpp"
 #include "cosmems/rod/rod_load_case.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
@@ -45,11 +43,9 @@ TransientResult RunFrame(const Scene& scene, const TransientOptions& options, in
   FrameSceneForces scene_forces(model, scene);
   ForceSum& forces = scene_forces.all();
   FrameDrives drives = CombDriveLoads(model, MakeCombDrives(scene, structure));
-  std::optional<FrameGapForce<ElectrostaticPressure>> electrodes;
-  if (IsOn(scene.effects.electrostatic)) {
-    forces.Add(
-        electrodes.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene), 1.0)));
-    drives.electrodes = &*electrodes;
+  if (FrameGapForce<ElectrostaticPressure>* electrodes = scene_forces.electrodes()) {
+    forces.Add(*electrodes);
+    drives.electrodes = electrodes;
     drives.electrode_voltage = MakeElectrodeDrive(scene);
   }
   FrameTransientResult out =

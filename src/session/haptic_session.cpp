@@ -5,7 +5,6 @@
 #include <string>
 
 #include "cosmems/analysis/comb_drive_force.hpp"
-#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/haptics/haptic_structure.hpp"
 #include "cosmems/openhaptics/openhaptics_device.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
@@ -73,10 +72,7 @@ struct HapticSession::Touched {
       : model(MakeStructureDescription(scene), MakeFrameCouplings(scene) | FrameCouplings::kTwist),
         forces(model, scene) {
     all.Add(forces.all());
-    if (IsOn(scene.effects.electrostatic)) {
-      all.Add(electrodes.emplace(MakeFrameElectrostaticForce(
-          model, MakeFramePullInOptions(scene), *scene.effects.electrostatic->voltage)));
-    }
+    if (forces.electrodes()) all.Add(*forces.electrodes());
     if (!scene.effects.combs.empty()) {
       all.Add(combs.emplace(model, MakeCombDrives(scene, model.description())));
     }
@@ -86,7 +82,6 @@ struct HapticSession::Touched {
 
   FrameModel model;
   FrameSceneForces forces;
-  std::optional<FrameGapForce<ElectrostaticPressure>> electrodes;
   std::optional<CombDriveForce> combs;
   ForceSum all;
   std::optional<HapticStructure> structure;

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
+#include "cosmems/analysis/frame_pullin_analysis.hpp"
 #include "cosmems/beam/force_sum.hpp"
+#include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/scene.hpp"
 #include "cosmems/scene/scene_conversion.hpp"
 #include "cosmems/structure/frame_element_force.hpp"
@@ -16,11 +19,11 @@
 
 namespace cosmems {
 
-/// The nonlinear forces a validated device scene declares besides its electrodes (which each
-/// analysis drives its own way: ramped with the loads, held by the pull-in's path, scaled by the
-/// voltage in time): the members' stretching, the Casimir and van der Waals pressures under all
-/// of the device, the gas film and the substrate's contact. An effect whose table is absent is
-/// never built, so it costs nothing. The model must outlive the forces.
+/// The nonlinear forces a validated scene declares: the members' stretching, the Casimir and van
+/// der Waals pressures under all of the structure, the gas film, the substrate's contact, and
+/// the electrodes' pressure, which each analysis drives its own way (ramped with the loads, held
+/// by the pull-in's path, scaled by the voltage in time) and so is kept out of all(). An effect
+/// whose table is absent is never built, so it costs nothing. The model must outlive the forces.
 class FrameSceneForces {
  public:
   FrameSceneForces(const FrameModel& model, const Scene& scene) {
@@ -42,6 +45,12 @@ class FrameSceneForces {
       all_.Add(film_.emplace(model, MakeSqueezeFilmOptions(scene), substrate.gap));
     }
     if (e.HasContact()) all_.Add(contact_.emplace(model, MakeContactOptions(scene)));
+    if (IsOn(e.electrostatic)) {
+      // At 1 V scaled by V^2 (the pressure is exactly quadratic in V), so that a transient can
+      // rescale it to V(t)^2.
+      electrodes_.emplace(MakeFrameElectrostaticForce(model, MakeFramePullInOptions(scene), 1.0));
+      electrodes_->SetScale(std::pow(e.electrostatic->voltage.value_or(0.0), 2));
+    }
   }
   FrameSceneForces(const FrameSceneForces&) = delete;
   FrameSceneForces& operator=(const FrameSceneForces&) = delete;
@@ -58,6 +67,10 @@ class FrameSceneForces {
   ForceSum& all() { return all_; }
   /// The substrate's contact, for its state and events (nullptr: not declared).
   FrameSubstrateContact* contact() { return contact_ ? &*contact_ : nullptr; }
+  /// The electrodes' pressure at the scene's DC voltage (nullptr: not declared); not in all().
+  FrameGapForce<ElectrostaticPressure>* electrodes() {
+    return electrodes_ ? &*electrodes_ : nullptr;
+  }
 
  private:
   std::optional<FrameStretchingForce> stretching_;
@@ -65,6 +78,7 @@ class FrameSceneForces {
   std::optional<FrameGapForce<VanDerWaalsPressure>> van_der_waals_;
   std::optional<FrameSqueezeFilm> film_;
   std::optional<FrameSubstrateContact> contact_;
+  std::optional<FrameGapForce<ElectrostaticPressure>> electrodes_;
   std::vector<FrameElementForce*> held_, pressures_, elements_;
   ForceSum all_;
 };
