@@ -1,27 +1,22 @@
 // What each effect adds to a time step, and proof that an absent one adds nothing. The planar
-// 20-element reference cantilever of the embedded scene `cantilever`, stepped at 1 us (f1 =
-// 68.8 kHz) by generalised-alpha with rho_inf = 0.6 (what contact needs), built the way `cosmems
-// run` builds a transient: the scene's [effects] decide which forces exist (SceneForces), and with
-// none the linear fast path runs.
+// 20-element reference cantilever of the embedded scene `cantilever` (its one-member netlist),
+// stepped at 1 us (f1 = 68.8 kHz) by generalised-alpha with rho_inf = 0.6 (what contact needs),
+// built the way `cosmems run` builds a transient: the scene's [effects] decide which forces exist
+// (FrameSceneForces, the electrodes at the scene's voltage among them), and with none the linear
+// fast path runs.
 //   BM_BareLinearStep      the linear integrator made directly, with no scene layer at all
 //   BM_EffectStep/none     the same beam through the scene layer with no effect declared
 //   BM_EffectStep/contact_idle contact declared, the beam ringing under the scene's small tip
 //                          force far above the substrate (idle steps)
 //   BM_EffectStep/<effect> one effect declared; the tip force presses the beam onto the
 //                          substrate for contact and stiction (2x the force that closes the gap)
-//   BM_EffectStepChain/<effect> the same, built as `cosmems run` builds it today: the scene's
-//                          one-member netlist (FrameModel) and its FrameSceneForces (the
-//                          electrodes at the scene's voltage among them)
 // The per-step cost is the mean over many steps after 2000 steps of settling.
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "cosmems/beam/load_vector.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
 #include "cosmems/scene/frame_scene_forces.hpp"
-#include "cosmems/scene/scene_conversion.hpp"
-#include "cosmems/scene/scene_forces.hpp"
 #include "cosmems/scene/scene_loader.hpp"
 #include "cosmems/time/linear_newmark_integrator.hpp"
 #include "cosmems/time/nonlinear_newmark_integrator.hpp"
@@ -50,13 +45,11 @@ void March(benchmark::State& state, Integrator& integrator, const Eigen::VectorX
 }
 
 void BM_BareLinearStep(benchmark::State& state) {
-  const BeamModel<2> model(bench::ReferenceBeam(StructureKind::kCantilever, 20, 1));
-  LoadCase loads;
-  loads.points.push_back({200e-6, Eigen::Vector3d(0, -1e-7, 0), Eigen::Vector3d::Zero()});
+  const FrameModel model(bench::ReferenceChain(StructureKind::kCantilever, 20, 1, true));
   LinearNewmarkIntegrator integrator(model.Mass(0), model.Stiffness(), {},
                                      GeneralizedAlphaParameters::FromSpectralRadius(0.6),
                                      kTimeStep / model.units().time);
-  March(state, integrator, AssembleLoads(model, loads));
+  March(state, integrator, AssembleFrameLoads(model, bench::ChainTipForce(1e-7)));
 }
 BENCHMARK(BM_BareLinearStep)->Unit(benchmark::kNanosecond);
 
@@ -69,8 +62,7 @@ Scene PlanarScene(std::vector<std::string> sets) {
 }
 
 // Marches the model under the load f with `forces` (nullptr: the linear fast path).
-template <class Model>
-void MarchTheEffects(benchmark::State& state, const Model& model, NonlinearForce* forces,
+void MarchTheEffects(benchmark::State& state, const FrameModel& model, NonlinearForce* forces,
                      const Eigen::VectorXd& f) {
   const auto parameters = GeneralizedAlphaParameters::FromSpectralRadius(0.6);
   const double dt = kTimeStep / model.units().time;
@@ -88,13 +80,6 @@ void MarchTheEffects(benchmark::State& state, const Model& model, NonlinearForce
 }
 
 void BM_EffectStep(benchmark::State& state, std::vector<std::string> sets) {
-  const Scene scene = PlanarScene(std::move(sets));
-  const BeamModel<2> model(MakeBeamDescription(scene));
-  SceneForces<2> forces(model, scene);
-  MarchTheEffects(state, model, forces.All(), AssembleLoads(model, MakeLoadCase(scene)));
-}
-
-void BM_EffectStepChain(benchmark::State& state, std::vector<std::string> sets) {
   const Scene scene = PlanarScene(std::move(sets));
   const StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure, MakeFrameCouplings(scene));
@@ -116,19 +101,6 @@ BENCHMARK_CAPTURE(BM_EffectStep, casimir, {"effects.casimir.enabled=true"});
 BENCHMARK_CAPTURE(BM_EffectStep, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"});
 BENCHMARK_CAPTURE(BM_EffectStep, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"});
 BENCHMARK_CAPTURE(BM_EffectStep, contact_stiction_casimir,
-                  {"effects.stiction.adhesion_energy=0.02", "effects.casimir.enabled=true",
-                   kPressed});
-
-BENCHMARK_CAPTURE(BM_EffectStepChain, none, {});
-BENCHMARK_CAPTURE(BM_EffectStepChain, contact, {"effects.contact.enabled=true", kPressed});
-BENCHMARK_CAPTURE(BM_EffectStepChain, contact_idle, {"effects.contact.enabled=true"});
-BENCHMARK_CAPTURE(BM_EffectStepChain, stiction,
-                  {"effects.stiction.adhesion_energy=0.02", kPressed});
-BENCHMARK_CAPTURE(BM_EffectStepChain, electrostatic_10V, {"effects.electrostatic.voltage=10.0"});
-BENCHMARK_CAPTURE(BM_EffectStepChain, casimir, {"effects.casimir.enabled=true"});
-BENCHMARK_CAPTURE(BM_EffectStepChain, van_der_waals, {"effects.van_der_waals.hamaker=1e-19"});
-BENCHMARK_CAPTURE(BM_EffectStepChain, squeeze_film, {"effects.squeeze_film.viscosity=1.81e-5"});
-BENCHMARK_CAPTURE(BM_EffectStepChain, contact_stiction_casimir,
                   {"effects.stiction.adhesion_energy=0.02", "effects.casimir.enabled=true",
                    kPressed});
 

@@ -6,11 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "cosmems/analysis/frame_static_analysis.hpp"
 #include "cosmems/core/validation.hpp"
 #include "cosmems/haptics/built_in_specs.hpp"
 #include "cosmems/linalg/band_cholesky.hpp"
-#include "cosmems/scene/device_target.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/touch_target.hpp"
 #include "cosmems/scripted/built_in_trajectory.hpp"
 #include "cosmems/scripted/csv_trajectory.hpp"
 #include "cosmems/structure/frame_model.hpp"
@@ -34,53 +35,44 @@ struct PressedPoint {
   double stiffness_n_per_m = 0.0;
 };
 
-// A beam's: the cantilever's tip (3EI/L^3) or the bridge's midspan (192EI/L^3).
-PressedPoint BeamPoint(const Scene& scene) {
-  const SceneStructure& s = scene.structure;
-  const double ei = scene.material.young_modulus * s.width * std::pow(s.thickness, 3) / 12.0;
-  const bool cantilever = s.kind == StructureKind::kCantilever;
-  PressedPoint out;
-  out.face_m = Eigen::Vector3d(cantilever ? s.length : 0.5 * s.length, 0.5 * s.thickness, 0.0);
-  out.thickness_m = s.thickness;
-  out.stiffness_n_per_m = (cantilever ? 3.0 : 192.0) * ei / std::pow(s.length, 3);
-  return out;
-}
-
-// A device's device.target (default: its first body): the body's upper face over its centre, or
-// the upper face of the members at the node; the stiffness 1 / (f^T K^-1 f) of the linear frame
-// under a unit force f toward the substrate there.
-PressedPoint DevicePoint(const Scene& scene) {
+// The pressed point's upper face, its thickness there, and the stiffness 1 / (f^T K^-1 f) of the
+// linear structure under a unit force f toward the substrate there.
+PressedPoint ThePressedPoint(const Scene& scene) {
   const StructureDescription structure = MakeStructureDescription(scene);
   const FrameModel model(structure);
-  const std::string target = DeviceTarget(scene, structure);
-  const int body = structure.FindBody(target);
-  const int node = structure.FindNode(target);
-  if (body < 0 && node < 0) {
-    throw std::invalid_argument("device.target: no node or body \"" + target + "\"");
-  }
+  const FrameRecordPoint where = TouchTarget(scene, structure);
   PressedPoint out;
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(model.FreeDofCount());
-  FrameModel::Motion unit = FrameModel::Motion::Zero();
-  unit[1] = -1.0;
-  if (body >= 0) {
-    const StructureBody& b = structure.bodies[body];
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  if (where.body >= 0) {
+    const StructureBody& b = structure.bodies[where.body];
     out.thickness_m = b.size.y();
-    out.face_m = b.center + 0.5 * b.size.y() * Eigen::Vector3d::UnitY();
-    model.AddCarrierLoad(model.mesh().body_carrier[body], unit, f);
-  } else {
+    centre = b.center;
+  } else if (where.node >= 0) {
     for (const StructureMember& m : structure.members) {
-      if (m.from == node || m.to == node)
+      if (m.from == where.node || m.to == where.node)
         out.thickness_m = std::max(out.thickness_m, m.section.thickness);
     }
-    out.face_m = structure.nodes[node].position + 0.5 * out.thickness_m * Eigen::Vector3d::UnitY();
-    model.AddNodeLoad(node, unit, f);
+    centre = structure.nodes[where.node].position;
+  } else {
+    const StructureMember& m = structure.members[where.member];
+    out.thickness_m = m.section.thickness;
+    centre = (1.0 - where.at) * structure.nodes[m.from].position +
+             where.at * structure.nodes[m.to].position;
   }
+  out.face_m = centre + 0.5 * out.thickness_m * Eigen::Vector3d::UnitY();
+  FrameLoadCase unit;
+  unit.points.push_back({where.node, where.body, -Eigen::Vector3d::UnitY(), Eigen::Vector3d::Zero(),
+                         where.member, where.at});
+  // A unit of the model's internal force: 1 N assembled, times the force unit.
+  const Eigen::VectorXd f = AssembleFrameLoads(model, unit) * model.units().force;
   Eigen::VectorXd u = f;
   BandCholesky(model.Stiffness()).SolveInPlace(u);
   const double compliance = f.dot(u) * model.units().length / model.units().force;  // m/N
   if (!(compliance > 0.0)) {
-    throw std::invalid_argument("device.target = \"" + target +
-                                "\": a press there moves nothing (it is anchored)");
+    const bool named = scene.device && scene.device->target;
+    throw std::invalid_argument(std::string("device.target") +
+                                (named ? " = \"" + *scene.device->target + "\"" : "") +
+                                ": a press there moves nothing (it is anchored)");
   }
   out.stiffness_n_per_m = 1.0 / compliance;
   return out;
@@ -106,7 +98,7 @@ HapticSettings MakeHapticSettings(const Scene& scene, const DeviceSpecs& specs) 
   const SceneStructure& s = scene.structure;
   HapticSettings out;
   out.specs = specs;
-  const PressedPoint pressed = IsDevice(s.kind) ? DevicePoint(scene) : BeamPoint(scene);
+  const PressedPoint pressed = ThePressedPoint(scene);
   const double k_structure = pressed.stiffness_n_per_m;
   out.probe.radius = device.probe_radius.value_or(pressed.thickness_m);
   // 25 times the structure: the probe sinks 4 % of a press into the coupling, and the coupling,

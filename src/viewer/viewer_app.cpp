@@ -17,8 +17,8 @@
 
 #include "comb_mesh.hpp"
 #include "cosmems/haptics/periodic_deadline.hpp"
-#include "cosmems/scene/device_target.hpp"
 #include "cosmems/scene/frame_conversion.hpp"
+#include "cosmems/scene/touch_target.hpp"
 #include "cosmems/scripted/scripted_device.hpp"
 #include "device_mesh.hpp"
 #include "device_stage.hpp"
@@ -80,23 +80,25 @@ class Window {
 
 // What the display needs of a scene besides the frames: its netlist (a beam's one member or a
 // device's), the mesh whose carriers the frames move, its combs and the point whose deflection
-// the plot follows: a device's device.target (default its first body), a cantilever's tip, a
-// bridge's midspan.
+// the plot follows (TouchTarget: a device's device.target, default its first body; a cantilever's
+// tip; a bridge's midspan).
 struct DrawnStructure {
   explicit DrawnStructure(const Scene& scene)
       : structure(MakeStructureDescription(scene)),
         mesh(structure),
         combs(MakeCombDrives(scene, structure)),
         beam(IsStraightBeam(scene)) {
-    if (scene.structure.kind == StructureKind::kBridge) {
-      const int elements = structure.members.front().elements;
-      target_element = std::min(elements - 1, elements / 2);
-      target_xi = 0.5 * elements - target_element;
-      return;
-    }
-    const std::string target = beam ? std::string("tip") : DeviceTarget(scene, structure);
-    target_body = structure.FindBody(target);
-    target_node = structure.FindNode(target);
+    const FrameRecordPoint target = TouchTarget(scene, structure);
+    target_node = target.node;
+    target_body = target.body;
+    if (target.member < 0) return;
+    // The members' elements come one member after another.
+    target_element = 0;
+    for (int m = 0; m < target.member; ++m) target_element += structure.members[m].elements;
+    const int elements = structure.members[target.member].elements;
+    const int k = std::min(elements - 1, static_cast<int>(target.at * elements));
+    target_element += k;
+    target_xi = target.at * elements - k;
   }
 
   // u_y of the target [m] in `frame`.

@@ -1,9 +1,8 @@
 #pragma once
 
-// The reference cantilever (silicon, 200 x 20 x 2 um, 20 planar elements) the haptic tests
-// touch, as a BeamModel and as the one-member netlist the command line touches, with its tip
-// stiffness 3EI/L^3 and the paper's surface under the netlist.
-#include "cosmems/beam/beam_model.hpp"
+// The reference cantilever (silicon, 200 x 20 x 2 um, 20 elements) the haptic tests touch, as
+// the one-member netlist the command line touches, with its tip stiffness 3EI/L^3 and the
+// paper's surface under it.
 #include "cosmems/beam/force_sum.hpp"
 #include "cosmems/haptics/device_types.hpp"
 #include "cosmems/haptics/hand_scaling.hpp"
@@ -15,11 +14,6 @@
 #include "test_beams.hpp"
 
 namespace cosmems::test {
-
-inline BeamModel<2> HapticCantilever() {
-  return BeamModel<2>(MakeStructure(StructureKind::kCantilever, kReferenceLength, Silicon(),
-                                    ReferenceSection(), 20, 0));
-}
 
 inline double ReferenceTipStiffness() {
   const double inertia = 20e-6 * 8e-18 / 12.0;  // b t^3 / 12
