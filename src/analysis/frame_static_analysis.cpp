@@ -46,6 +46,13 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
       RequireFinite(where + ".force", load.force[k]);
       RequireFinite(where + ".moment", load.moment[k]);
     }
+    // A planar structure has no u_z, r_x or r_y: a load along them would be lost.
+    if (model.description().planar &&
+        (load.force.z() != 0.0 || load.moment.x() != 0.0 || load.moment.y() != 0.0)) {
+      throw std::invalid_argument(where +
+                                  ": a planar structure moves in the x-y plane alone (no force "
+                                  "along z, no moment about x or y)");
+    }
     FrameModel::Motion l;
     l << load.force / units.force, load.moment / units.Moment();
     if (load.node >= 0 && load.node < static_cast<int>(model.description().nodes.size())) {
@@ -64,6 +71,10 @@ Eigen::VectorXd AssembleFrameLoads(const FrameModel& model, const FrameLoadCase&
     }
   }
   for (int k = 0; k < 3; ++k) RequireFinite("loads.distributed", loads.distributed[k]);
+  if (model.description().planar && loads.distributed.z() != 0.0) {
+    throw std::invalid_argument(
+        "loads.distributed: a planar structure moves in the x-y plane alone (no load along z)");
+  }
   if (!loads.distributed.isZero(0.0)) {
     for (int e = 0; e < model.ElementCount(); ++e) {
       const FrameMesh::Element& element = model.mesh().elements[e];
