@@ -79,10 +79,11 @@ struct HapticPhysicsOptions {
   }
 };
 
-/// What the hand touches, as the HapticLoop ticks it (HapticStructure; a test's stand-in). Advance() places the probe and advances the physics by tick_s; after it
-/// the physics holds the LocalModel the servo loop renders. Advance() and Fill() allocate
-/// nothing and report a failure as a status; a failed tick leaves the structure where it was and
-/// the local model invalid (the safety layer then brings the force to zero).
+/// What the hand touches, as the HapticLoop ticks it (HapticStructure; a test's stand-in).
+/// Advance() places the probe and advances the physics by tick_s; after it the physics holds the
+/// LocalModel the servo loop renders. Advance() and Fill() allocate nothing and report a failure as
+/// a status; a failed tick leaves the structure where it was and the local model invalid (the
+/// safety layer then brings the force to zero).
 class HapticPhysics {
  public:
   virtual ~HapticPhysics() = default;
